@@ -1,0 +1,144 @@
+"""The command line: describe, plugins, --help and one-line errors with exit code 2."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from viscocontact.cli import SUBCOMMANDS, main
+
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "scenes"
+
+GROUP_KEYS = {"gamma", "Gamma", "amplitude", "m2", "zeta", "beta", "tabor", "tabor_glassy", "rms",
+              "physical", "warnings"}
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_describe_json_sinusoid(capsys):
+    code, out, err = run(capsys, "describe", str(EXAMPLES / "sinusoid.toml"), "--json")
+    assert code == 0 and err == ""
+    groups = json.loads(out)
+    assert GROUP_KEYS <= set(groups)
+    assert groups["gamma"] == 1e-5 and groups["amplitude"] == 0.05
+    assert groups["Gamma"] == pytest.approx(1e-5 / 0.05**2)
+    assert groups["beta"] == 10.0 and groups["zeta"] == 0.01
+    assert groups["tabor"] is None and groups["physical"] is None
+    assert groups["mean_pressure"] == 0.3
+
+
+def test_describe_json_thesis(capsys):
+    code, out, err = run(capsys, "describe", str(EXAMPLES / "thesis_rough.toml"), "--json")
+    assert code == 0
+    groups = json.loads(out)
+    assert groups["tabor"] == pytest.approx(383.0, rel=1e-3)
+    assert groups["gamma"] == pytest.approx(2.387e-7, rel=1e-3)
+    assert groups["hurst"] == 0.8 and groups["scales"] == 50
+    assert groups["physical"]["E0"] == 1e7
+    assert groups["rms"] == pytest.approx(2 * 3.141592653589793 / 6.28e-3 * 1e-5)
+
+
+def test_describe_text(capsys):
+    code, out, err = run(capsys, "describe", str(EXAMPLES / "thesis_rough.toml"))
+    assert code == 0
+    assert "gamma" in out and "tabor" in out and "physical:" in out and "383" in out
+
+
+def test_describe_warns_on_small_tabor(capsys, tmp_path):
+    scene = tmp_path / "hard.toml"
+    scene.write_text(
+        '[profile]\nkind = "sinusoid"\n[rheology]\nkind = "elastic"\n'
+        '[load]\npenetration = 0.5\n'
+        '[physical]\nE0 = 2e11\nwavelength = 1e-4\namplitude = 1e-6\nwork_of_adhesion = 0.01\n')
+    code, out, err = run(capsys, "describe", str(scene), "--json")
+    assert code == 0
+    assert json.loads(out)["tabor"] < 3
+    assert err.startswith("warning: Tabor parameter") and "< 3" in err
+
+
+def test_plugins_json(capsys):
+    code, out, err = run(capsys, "plugins", "--json")
+    assert code == 0
+    table = json.loads(out)
+    assert set(table) == {"profiles", "rheologies", "kernels", "solvers", "adhesion"}
+    names = {group: {e["name"] for e in entries} for group, entries in table.items()}
+    assert {"sinusoid", "self-affine", "measured"} <= names["profiles"]
+    assert {"elastic", "standard-linear-solid", "prony"} <= names["rheologies"]
+    assert {"half-plane", "confined-layer", "free-layer"} <= names["kernels"]
+    assert {"newton", "broyden", "nonlinear-cg", "bisection"} <= names["solvers"]
+    assert {"none", "energy-balance"} <= names["adhesion"]
+    entry = next(e for e in table["rheologies"] if e["name"] == "elastic")
+    assert entry == {"name": "elastic", "distribution": "viscocontact"}
+
+
+def test_plugins_text(capsys):
+    code, out, err = run(capsys, "plugins")
+    assert code == 0
+    assert "rheologies:" in out and "standard-linear-solid" in out and "(viscocontact)" in out
+
+
+@pytest.mark.parametrize("command", sorted(SUBCOMMANDS))
+def test_every_subcommand_has_help(capsys, command):
+    code, out, err = run(capsys, command, "--help")
+    assert code == 0 and f"usage: viscocontact {command}" in out
+
+
+def test_top_level_help_lists_subcommands(capsys):
+    code, out, err = run(capsys, "--help")
+    assert code == 0
+    for command in SUBCOMMANDS:
+        assert command in out
+
+
+def _assert_one_line_error(code, err, *fragments):
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert "Traceback" not in err
+    for fragment in fragments:
+        assert fragment in lines[0]
+
+
+def test_missing_file(capsys, tmp_path):
+    code, out, err = run(capsys, "describe", str(tmp_path / "nope.toml"))
+    _assert_one_line_error(code, err, "no such file", "nope.toml")
+
+
+def test_toml_syntax_error(capsys, tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[profile\nkind = 'sinusoid'\n")
+    code, out, err = run(capsys, "describe", str(bad))
+    _assert_one_line_error(code, err, "invalid TOML", "bad.toml")
+
+
+@pytest.mark.parametrize("text,fragment", [
+    ('[profile]\nkind = "sinusoid"\namplitude = 0.1\n[rheology]\nkind = "elastc"\n'
+     '[load]\npenetration = 0.5\n', "rheology.kind"),
+    ('[profile]\nkind = "sinusoid"\namplitude = 0.1\n[rheology]\nkind = "elastic"\n'
+     '[load]\npenetration = 0.5\nmean_pressure = 0.1\n', "exactly one"),
+    ('[profile]\nkind = "sinusoid"\namplitude = 0.1\n[rheology]\nkind = "elastic"\n'
+     '[load]\npenetration = 0.5\n[sliding]\nzeta = -1.0\n', "sliding.zeta"),
+])
+def test_validation_error(capsys, tmp_path, text, fragment):
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text)
+    code, out, err = run(capsys, "describe", str(scene))
+    _assert_one_line_error(code, err, fragment)
+    assert out == ""
+
+
+def test_directory_instead_of_file(capsys, tmp_path):
+    code, out, err = run(capsys, "describe", str(tmp_path))
+    _assert_one_line_error(code, err, "cannot read")
+
+
+def test_usage_errors_exit_2(capsys):
+    assert main(["frobnicate"]) == 2
+    assert main([]) == 2
+    assert main(["describe"]) == 2
+    capsys.readouterr()

@@ -1,0 +1,130 @@
+"""Entry-point registry of components.
+
+One small generic class serves the five component kinds. Listing names imports nothing; looking a
+name up loads the entry point, checks that it is a subclass of the kind's base class, and caches it.
+An unknown name lists the registered ones with a "did you mean"; a broken plugin fails only when it
+is asked for, chained to its original ImportError. Built-ins are registered through the package's
+own entry points, exactly like third-party plugins.
+"""
+from __future__ import annotations
+
+import difflib
+from importlib import metadata
+from typing import Any, Callable, Iterable
+
+from .errors import PluginError
+
+GROUPS = {
+    "profiles": "viscocontact.profiles",
+    "rheologies": "viscocontact.rheologies",
+    "kernels": "viscocontact.kernels",
+    "solvers": "viscocontact.solvers",
+    "adhesion": "viscocontact.adhesion",
+}
+
+
+class Registry:
+    """Components of one kind, found through the entry-point group ``group``.
+
+    Parameters
+    ----------
+    group : str
+        Entry-point group, e.g. ``"viscocontact.rheologies"``.
+    base : callable returning a class
+        Returns the abstract base class every entry must subclass (a callable so that the base's
+        module is imported only when a component is loaded).
+    entry_points : callable, optional
+        Returns the entry points to use (tests pass fakes); defaults to ``importlib.metadata``.
+    """
+
+    def __init__(self, group: str, base: Callable[[], type],
+                 entry_points: Callable[[], Iterable[metadata.EntryPoint]] | None = None):
+        self.group = group
+        self._base = base
+        self._entry_points = entry_points or (lambda: metadata.entry_points(group=group))
+        self._cache: dict[str, type] = {}
+
+    def _eps(self) -> dict[str, metadata.EntryPoint]:
+        found: dict[str, metadata.EntryPoint] = {}
+        for ep in self._entry_points():
+            # First registration wins; a duplicate from another distribution is ignored.
+            found.setdefault(ep.name, ep)
+        return found
+
+    def names(self) -> list[str]:
+        """Registered names (imports nothing)."""
+        return sorted(self._eps())
+
+    def describe(self) -> list[dict[str, Any]]:
+        """``[{"name": ..., "distribution": ...}, ...]`` for every registered name."""
+        out = []
+        for name, ep in sorted(self._eps().items()):
+            dist = getattr(ep, "dist", None)
+            out.append({"name": name, "distribution": getattr(dist, "name", None) if dist else None,
+                        "value": ep.value})
+        return out
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._eps()
+
+    def get(self, name: str) -> type:
+        """The class registered as ``name``."""
+        if name in self._cache:
+            return self._cache[name]
+        eps = self._eps()
+        if name not in eps:
+            close = difflib.get_close_matches(name, list(eps), n=1)
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            raise PluginError(f"unknown {self.group.split('.')[-1]} kind {name!r}: registered are "
+                              f"{sorted(eps)}{hint}")
+        try:
+            cls = eps[name].load()
+        except Exception as exc:  # a broken plugin fails only when asked for
+            raise PluginError(f"{self.group} entry {name!r} ({eps[name].value}) failed to load: "
+                              f"{exc}") from exc
+        base = self._base()
+        if not (isinstance(cls, type) and issubclass(cls, base)):
+            raise PluginError(f"{self.group} entry {name!r} ({eps[name].value}) is not a subclass "
+                              f"of {base.__module__}.{base.__qualname__}")
+        self._cache[name] = cls
+        return cls
+
+    __getitem__ = get
+
+    def name_of(self, obj: Any) -> str:
+        """The registered name of a component instance or class (the tag written to files)."""
+        cls = obj if isinstance(obj, type) else type(obj)
+        target = f"{cls.__module__}:{cls.__qualname__}"
+        for name, ep in sorted(self._eps().items()):
+            if ep.value.replace(" ", "") == target:
+                return name
+        for name, cached in self._cache.items():
+            if cached is cls:
+                return name
+        raise PluginError(f"{target} is not registered in {self.group}")
+
+
+def _base(kind: str) -> Callable[[], type]:
+    def load():
+        import importlib
+
+        module, attr = {
+            "profiles": ("viscocontact.profiles.base", "Profile"),
+            "rheologies": ("viscocontact.rheology.base", "Rheology"),
+            "kernels": ("viscocontact.kernels.base", "GreenKernel"),
+            "solvers": ("viscocontact.solvers.base", "NonlinearSolver"),
+            "adhesion": ("viscocontact.adhesion.base", "AdhesionModel"),
+        }[kind]
+        return getattr(importlib.import_module(module), attr)
+
+    return load
+
+
+profiles = Registry(GROUPS["profiles"], _base("profiles"))
+rheologies = Registry(GROUPS["rheologies"], _base("rheologies"))
+kernels = Registry(GROUPS["kernels"], _base("kernels"))
+solvers = Registry(GROUPS["solvers"], _base("solvers"))
+adhesion = Registry(GROUPS["adhesion"], _base("adhesion"))
+
+REGISTRIES = {"profiles": profiles, "rheologies": rheologies, "kernels": kernels,
+              "solvers": solvers, "adhesion": adhesion}

@@ -1,0 +1,1 @@
+"""Contact-mechanics internals: meshes, fixed-edge field solutions, edge terms, contact sets."""

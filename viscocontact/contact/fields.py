@@ -1,0 +1,136 @@
+r"""The stress field for given contact edges (thesis eqs. 4.18, 4.30-4.32) and what follows from it.
+
+For fixed edges the problem is linear: ``B σ̃ = r̃(ξ) - 1 + Δ̃`` at the collocation points, with
+``B`` the influence matrix of the prepared kernel. In penetration control ``Δ̃`` is given; in load
+control ``σ̃ = σ_r + Δ̃ σ_1`` (``B σ_r = r̃ - 1``, ``B σ_1 = 1``) and ``Δ̃`` follows from
+``p̃∞ = -(1/2π) Σ h_q σ̃_q``.
+
+Stress-intensity factors ``K̃ = lim σ̃ √(2π r̃)`` (``r̃`` the distance from the edge, tensile positive)
+are fitted on the elements next to each edge to the element averages of
+``r^{-1/2}, r^{1/2}, r^{3/2}`` — the expansion of ``s(x)/√((x-a)(b-x))`` with smooth ``s``.
+"""
+from __future__ import annotations
+
+import attrs
+import numpy as np
+from scipy.linalg import lu_factor, lu_solve
+
+from .mesh import Mesh
+
+N_FIT = 8          # elements used for each stress-intensity fit
+_POWERS = (-0.5, 0.5, 1.5)
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class NormalizedProfile:
+    """The profile in the units of eq. 4.18: ``r̃ = r/Λ`` (max 1) against ``x̃``."""
+
+    profile: object
+    amplitude: float          # Λ̃ = q0 Λ
+    peak_position: float
+
+    @classmethod
+    def of(cls, profile) -> "NormalizedProfile":
+        xp, lam = profile.peak()
+        return cls(profile=profile, amplitude=float(lam), peak_position=float(xp))
+
+    def heights(self, x):
+        """``r̃(x̃) = r/Λ``."""
+        return self.profile.heights(x) / self.amplitude
+
+    def slopes(self, x):
+        """``dr̃/dx̃``."""
+        return self.profile.slopes(x) / self.amplitude
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class FieldSolution:
+    """Stress, penetration and load for one set of edges.
+
+    Attributes
+    ----------
+    mesh : Mesh
+    sigma : (N,) array
+        Element stresses ``σ̃`` (tensile positive).
+    penetration, mean_pressure : float
+        ``Δ̃`` and ``p̃∞``.
+    """
+
+    mesh: Mesh
+    sigma: np.ndarray
+    penetration: float
+    mean_pressure: float
+    matrix: np.ndarray
+    lu: tuple
+    rhs0: np.ndarray          # r̃(ξ) - 1 at the collocation points
+
+
+def solve_fields(mesh: Mesh, kernel, shape: NormalizedProfile, *, penetration=None,
+                 mean_pressure=None) -> FieldSolution:
+    """Solve eq. 4.31 on ``mesh`` in penetration or load control (exactly one given)."""
+    B = kernel.influence(mesh.mid, mesh.left, mesh.right)
+    lu = lu_factor(B, check_finite=False)
+    rhs0 = shape.heights(mesh.mid) - 1.0
+    h = mesh.width
+    if penetration is not None:
+        sigma = lu_solve(lu, rhs0 + penetration, check_finite=False)
+        delta = float(penetration)
+    else:
+        both = lu_solve(lu, np.column_stack([rhs0, np.ones_like(rhs0)]), check_finite=False)
+        s_r, s_1 = both[:, 0], both[:, 1]
+        delta = float((-2 * np.pi * mean_pressure - h @ s_r) / (h @ s_1))
+        sigma = s_r + delta * s_1
+    p = float(-(h @ sigma) / (2 * np.pi))
+    return FieldSolution(mesh=mesh, sigma=sigma, penetration=delta, mean_pressure=p, matrix=B,
+                         lu=lu, rhs0=rhs0)
+
+
+def _avg_power(ra, rb, p):
+    return (rb ** (p + 1) - ra ** (p + 1)) / ((p + 1) * (rb - ra))
+
+
+def edge_fit(ra, rb, values, n_fit: int = N_FIT):
+    """Least-squares coefficients of ``r^{-1/2}, r^{1/2}, r^{3/2}`` from element averages."""
+    ra, rb, values = ra[:n_fit], rb[:n_fit], values[:n_fit]
+    A = np.column_stack([_avg_power(ra, rb, p) for p in _POWERS])
+    scale = np.linalg.norm(A, axis=0)
+    coef, *_ = np.linalg.lstsq(A / scale, values, rcond=None)
+    return coef / scale
+
+
+def stress_intensity(mesh: Mesh, values: np.ndarray) -> np.ndarray:
+    """``K̃ = σ̃√(2π r̃)`` at every edge (order ``X_1, X_2, ...``) of a piecewise-constant field."""
+    out = np.empty(2 * mesh.n_contacts)
+    for j in range(mesh.n_contacts):
+        sl = mesh.slice(j)
+        a, b, v = mesh.left[sl], mesh.right[sl], values[sl]
+        xl, xr = mesh.edges[2 * j], mesh.edges[2 * j + 1]
+        n_fit = min(N_FIT, max(3, len(v) // 2))
+        cl = edge_fit(a - xl, b - xl, v, n_fit)
+        cr = edge_fit((xr - b)[::-1], (xr - a)[::-1], v[::-1], n_fit)
+        out[2 * j] = cl[0] * np.sqrt(2 * np.pi)
+        out[2 * j + 1] = cr[0] * np.sqrt(2 * np.pi)
+    return out
+
+
+def displacement(kernel, mesh: Mesh, sigma: np.ndarray, x: np.ndarray, chunk: int = 2048):
+    """``ũ(x)`` produced by the element stresses (any points)."""
+    x = np.asarray(x, dtype=float)
+    out = np.empty(x.shape)
+    flat = x.ravel()
+    res = out.ravel()
+    for i in range(0, flat.size, chunk):
+        res[i:i + chunk] = kernel.influence(flat[i:i + chunk], mesh.left, mesh.right) @ sigma
+    return res.reshape(x.shape)
+
+
+def friction(mesh: Mesh, sigma: np.ndarray, shape: NormalizedProfile, mean_pressure: float):
+    """Viscoelastic friction coefficient, positive when it opposes sliding.
+
+    ``μ = -(1/(λ0 p∞)) ∫ p u' dx`` (eq. 4.16 with the sign that makes it the dissipated power over
+    V·load; see docs/kernels.md) ``= (1/(2π p̃∞)) Σ_q σ̃_q [q0 r(b_q) - q0 r(a_q)]`` exactly for
+    piecewise-constant stress, since ``u' = r'`` in contact.
+    """
+    prof = shape.profile
+    work = sigma @ (prof.heights(mesh.right) - prof.heights(mesh.left))
+    return float(work / (2 * np.pi * mean_pressure)) if mean_pressure != 0 else float("nan")

@@ -1,0 +1,42 @@
+"""Exceptions raised by viscocontact.
+
+Every error about user input is a :class:`ValidationError` whose message names the field, the
+offending value and the allowed range, so that a scene file can be fixed without reading a traceback.
+"""
+from __future__ import annotations
+
+
+class ViscoContactError(Exception):
+    """Base class of all viscocontact errors."""
+
+
+class ValidationError(ViscoContactError, ValueError):
+    """Bad input: the message names the field, the value and what is allowed.
+
+    Parameters
+    ----------
+    field : str
+        Dotted name of the field (``"rheology.beta"``).
+    value : object
+        The rejected value.
+    allowed : str
+        Human-readable description of the allowed values (``"> 1"``, ``"one of ['a', 'b']"``).
+    """
+
+    def __init__(self, field: str, value: object, allowed: str):
+        self.field = field
+        self.value = value
+        self.allowed = allowed
+        super().__init__(f"{field} = {value!r} is not allowed: expected {allowed}")
+
+
+class PluginError(ViscoContactError, LookupError):
+    """A component name is unknown, or its plugin failed to load."""
+
+
+class ConvergenceError(ViscoContactError):
+    """A solve did not converge; ``result`` holds the partial (unconverged) result."""
+
+    def __init__(self, message: str, result: object = None):
+        super().__init__(message)
+        self.result = result

@@ -1,0 +1,149 @@
+r"""A kernel prepared for one rheology and one speed: tables and influence coefficients.
+
+The antiderivative of the kernel, vanishing at 0 and periodic, is assembled from exact pieces
+(module :mod:`~viscocontact.kernels.base` for the notation):
+
+.. math:: \tilde F(x) = \frac{1}{\pi}\Big[K_\infty\,(-\mathrm{Cl}_2(x))
+          + \sum_i w_i\, \big(\mathcal{M}_{\zeta_i}[\Phi](x) - \mathcal{M}_{\zeta_i}[\Phi](0)\big)
+          + \sum_m \frac{A_m}{m^2}\,\mathrm{Im}\big[K(m)(e^{imx} - 1)\big]\Big] ,
+
+the first term in closed form (Clausen), the memory terms from :class:`MemoryTable` (one per
+creep branch), the layer correction (``A_m = 1 - S_m``, exponentially decaying) from an FFT on a
+uniform grid with a periodic cubic spline. The influence coefficient of element ``[a, b]`` at
+collocation point ``ξ`` (eq. 4.32) is then ``B = F(ξ - a) - F(ξ - b) + c0 (b - a)``.
+
+Branches with ``ζ_i < 1e-12`` are taken as fully relaxed (error ``O(ζ log ζ)``) and those with
+``ζ_i > 1e12`` as frozen (error ``O(1/ζ)``).
+"""
+from __future__ import annotations
+
+import attrs
+import numpy as np
+from scipy.interpolate import CubicSpline
+
+from .clausen import TWO_PI, cl2, log_kernel
+from .memory import MemoryTable
+
+ZETA_RELAXED = 1e-12
+ZETA_FROZEN = 1e12
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class PreparedKernel:
+    """Tables of a kernel for one rheology and one ``ζ``; build with :meth:`GreenKernel.prepare`.
+
+    Attributes
+    ----------
+    instantaneous : float
+        ``K∞`` plus the weights of branches treated as relaxed.
+    weights, zetas : ndarray
+        Weights ``w_i`` and memory lengths ``ζ_i`` of the active memory branches.
+    mean : float
+        ``c0`` (constant kernel, eq. 2.44).
+    """
+
+    kernel: object
+    zeta: float
+    instantaneous: float
+    weights: np.ndarray
+    zetas: np.ndarray
+    mean: float
+    tables: tuple
+    correction: object  # CubicSpline of the layer correction antiderivative, or None
+    correction_values: object  # CubicSpline of the layer correction kernel, or None
+    all_weights: np.ndarray
+    all_zetas: np.ndarray
+    k_inf: float
+
+    @classmethod
+    def build(cls, kernel, rheology, zeta: float) -> "PreparedKernel":
+        zeta = float(zeta)
+        if not np.isfinite(zeta) or zeta < 0:
+            raise ValueError(f"zeta = {zeta!r} is not allowed: expected a finite real >= 0")
+        e0 = rheology.relaxed_modulus
+        spec = rheology.creep_spectrum()
+        k_inf = e0 * spec.instantaneous
+        w_all = e0 * np.asarray(spec.weights, float)
+        z_all = zeta * np.asarray(spec.times, float) / rheology.reference_time
+        inst = k_inf + float(np.sum(w_all[z_all < ZETA_RELAXED]))
+        active = (z_all >= ZETA_RELAXED) & (z_all <= ZETA_FROZEN)
+        w, z = w_all[active], z_all[active]
+        tables = tuple(MemoryTable(zi) for zi in z)
+        corr, corr_v = None, None
+        n_modes = kernel.correction_modes()
+        if n_modes > 0:
+            corr, corr_v = _correction_splines(kernel, k_inf, w_all, z_all, n_modes)
+        return cls(kernel=kernel, zeta=zeta, instantaneous=inst, weights=w, zetas=z,
+                   mean=float(kernel.mean_compliance()), tables=tables, correction=corr,
+                   correction_values=corr_v, all_weights=w_all, all_zetas=z_all, k_inf=k_inf)
+
+    # ---- Fourier view ----------------------------------------------------------------------
+    def compliance(self, m):
+        """``K(m) = K∞ + Σ w_i/(1 - i m ζ_i)`` (all branches, no limits applied)."""
+        m = np.asarray(m, dtype=float)
+        out = np.full(m.shape, self.k_inf, dtype=complex)
+        for wi, zi in zip(self.all_weights, self.all_zetas):
+            out = out + wi / (1.0 - 1j * m * zi)
+        return out
+
+    def multiplier(self, m):
+        """Fourier multiplier: ``û_m = -(S_m K(m)/m) σ̂_m`` for ``m >= 1``."""
+        m = np.asarray(m, dtype=float)
+        return self.kernel.geometry_factors(m) * self.compliance(m)
+
+    # ---- real space ------------------------------------------------------------------------
+    def antiderivative(self, x):
+        """``F̃(x) = ∫_0^x G̃(s) ds`` without the constant ``c0`` part (periodic, F̃(0) = 0)."""
+        x = np.asarray(x, dtype=float)
+        acc = -self.instantaneous * cl2(x)
+        for wi, tab in zip(self.weights, self.tables):
+            acc = acc + wi * tab.antiderivative(x)
+        if self.correction is not None:
+            acc = acc + self.correction(np.mod(x, TWO_PI))
+        return acc / np.pi
+
+    def values(self, x):
+        """The kernel ``G̃_V(x)`` of eq. 4.19 (times ``S_m`` geometry, plus ``c0``) at points ``x``."""
+        x = np.asarray(x, dtype=float)
+        acc = self.instantaneous * log_kernel(x)
+        for wi, tab in zip(self.weights, self.tables):
+            acc = acc + wi * tab.values(x)
+        if self.correction_values is not None:
+            acc = acc + self.correction_values(np.mod(x, TWO_PI))
+        return acc / np.pi + self.mean
+
+    def influence(self, collocation, left, right):
+        """Influence matrix ``B[l, q] = ∫_{left_q}^{right_q} G̃(ξ_l - η) dη`` (eq. 4.32).
+
+        Parameters
+        ----------
+        collocation : (N,) array
+            Collocation points ``ξ_l``.
+        left, right : (M,) arrays
+            Element ends (``right > left``), on any union of intervals.
+        """
+        xi = np.asarray(collocation, dtype=float)[:, None]
+        a = np.asarray(left, dtype=float)[None, :]
+        b = np.asarray(right, dtype=float)[None, :]
+        return self.antiderivative(xi - a) - self.antiderivative(xi - b) + self.mean * (b - a)
+
+
+def _correction_splines(kernel, k_inf, w_all, z_all, n_modes):
+    """Layer correction ``Σ_m (A_m/m) Re[K e^{imx}]`` and its antiderivative on an FFT grid."""
+    m = np.arange(1, n_modes + 1, dtype=float)
+    a_m = 1.0 - kernel.geometry_factors(m)
+    k_m = np.full(m.shape, k_inf, dtype=complex)
+    for wi, zi in zip(w_all, z_all):
+        k_m = k_m + wi / (1.0 - 1j * m * zi)
+    n = 1 << int(np.ceil(np.log2(max(4096, 32 * n_modes))))
+    spec_f = np.zeros(n, dtype=complex)
+    spec_g = np.zeros(n, dtype=complex)
+    spec_f[1:n_modes + 1] = a_m * k_m / m**2
+    spec_g[1:n_modes + 1] = a_m * k_m / m
+    sum_f = np.fft.ifft(spec_f) * n      # Σ c_m e^{i m x_k}
+    sum_g = np.fft.ifft(spec_g) * n
+    x = np.linspace(0.0, TWO_PI, n + 1)
+    f = np.append(sum_f.imag - np.sum(spec_f).imag, 0.0)
+    f[-1] = f[0]
+    g = np.append(sum_g.real, sum_g.real[0])
+    return CubicSpline(x, f, bc_type="periodic"), CubicSpline(x, g, bc_type="periodic")

@@ -1,0 +1,104 @@
+"""The :class:`Profile` interface: a rigid 1D periodic profile.
+
+Contract for implementers
+-------------------------
+1. Coordinates are the thesis's dimensionless ``x̃ = q0·x``; the period is ``2π`` (fundamental
+   wavelength λ0). Heights are ``q0·r(x)`` (so the sinusoid's amplitude is ``Λ̃ = q0·Λ``) and slopes
+   are ``dr/dx`` (dimensionless, scale-free).
+2. Implement :meth:`heights` and :meth:`slopes` (vectorised over any array shape; exact for
+   spectral profiles). Everything else has a default built on them.
+3. Implementations are frozen attrs classes, keyword-only, validated at construction.
+"""
+from __future__ import annotations
+
+import abc
+
+import attrs
+import numpy as np
+
+TWO_PI = 2.0 * np.pi
+
+
+@attrs.frozen(kw_only=True)
+class ProfileStatistics:
+    """Height and slope statistics of a profile over one period (heights in units of 1/q0).
+
+    Attributes
+    ----------
+    amplitude : float
+        ``Λ̃ = q0·max r`` (heights are measured from the mean line).
+    m0, m2, m4 : float
+        Spectral moments ``<r²>`` (q0² units), ``<r'²>`` (dimensionless), ``<r''²>`` (q0^-2 units).
+    rms, ra : float
+        Root-mean-square and arithmetic-mean height (q0·r units).
+    skewness, kurtosis : float
+        Third and fourth standardised moments of the heights.
+    """
+
+    amplitude: float
+    m0: float
+    m2: float
+    m4: float
+    rms: float
+    ra: float
+    skewness: float
+    kurtosis: float
+
+
+class Profile(abc.ABC):
+    """A rigid 1D profile, periodic over ``x̃ ∈ [0, 2π)``; see the module docstring."""
+
+    @abc.abstractmethod
+    def heights(self, x: np.ndarray) -> np.ndarray:
+        """``q0·r(x̃)`` with zero mean over the period."""
+
+    @abc.abstractmethod
+    def slopes(self, x: np.ndarray) -> np.ndarray:
+        """``dr/dx`` at ``x̃``."""
+
+    def curvatures(self, x: np.ndarray) -> np.ndarray:
+        """``d²(q0 r)/dx̃²`` (default: central difference of :meth:`slopes`)."""
+        x = np.asarray(x, dtype=float)
+        h = 1e-5
+        return (self.slopes(x + h) - self.slopes(x - h)) / (2 * h)
+
+    def peak(self) -> tuple[float, float]:
+        """``(x̃_peak, Λ̃)``: the position in ``[0, 2π)`` and value of the global maximum height."""
+        x = np.linspace(0.0, TWO_PI, 8192, endpoint=False)
+        r = self.heights(x)
+        i = int(np.argmax(r))
+        # refine with a few safeguarded Newton steps on the slope
+        xp = x[i]
+        for _ in range(30):
+            s, c = float(self.slopes(xp)), float(self.curvatures(xp))
+            if c >= 0 or not np.isfinite(s / c):
+                break
+            step = -s / c
+            if abs(step) > x[1] - x[0]:
+                break
+            xp += step
+            if abs(step) < 1e-15:
+                break
+        if self.heights(xp) < r[i]:
+            xp = x[i]
+        return float(np.mod(xp, TWO_PI)), float(self.heights(xp))
+
+    @property
+    def amplitude(self) -> float:
+        """``Λ̃ = q0·max r``."""
+        return self.peak()[1]
+
+    def statistics(self, n: int = 1 << 14) -> ProfileStatistics:
+        """Statistics from ``n`` uniform samples (spectral profiles override with exact moments)."""
+        x = np.linspace(0.0, TWO_PI, n, endpoint=False)
+        r = self.heights(x)
+        s = self.slopes(x)
+        k = self.curvatures(x)
+        rc = r - r.mean()
+        m0 = float(np.mean(rc**2))
+        sd = np.sqrt(m0)
+        return ProfileStatistics(
+            amplitude=self.amplitude, m0=m0, m2=float(np.mean(s**2)), m4=float(np.mean(k**2)),
+            rms=float(sd), ra=float(np.mean(np.abs(rc))),
+            skewness=float(np.mean(rc**3) / sd**3) if sd > 0 else 0.0,
+            kurtosis=float(np.mean(rc**4) / sd**4) if sd > 0 else 0.0)

@@ -1,0 +1,679 @@
+"""The scene: one steady-sliding contact problem, its file format and its unit conversion.
+
+A scene file (TOML) holds one table per component — ``[profile]``, ``[rheology]``, ``[kernel]``,
+``[adhesion]``, ``[solver]`` — each naming a registered ``kind`` and its parameters, plus ``[load]``
+(``mean_pressure`` p̃∞ *or* ``penetration`` Δ̃), ``[sliding]`` (``zeta`` ζ = q0·V·τ) and an optional
+top-level ``poisson``. Every value is one of the dimensionless groups of the thesis's eq. 4.17.
+
+An optional ``[physical]`` table gives the same scene in SI units; it is converted here, at this
+one boundary, into the dimensionless keys (see :data:`PHYSICAL_KEYS` and ``docs/scene.md``):
+
+* ``q0 = 2π/λ0``, ``γ̃ = (1-ν²) q0 Δγ/(π E0)``, ``ζ = q0 V τ``, ``Λ̃ = q0 Λ``, ``rms → q0 r_rms``,
+  ``thickness → q0 d``, ``p̃∞ = 2(1-ν²) p∞/(E0 q0 Λ)``, ``Δ̃ = Δ/Λ`` with ``Λ = max r`` of the
+  built profile.
+
+A physical value fills its dimensionless key when that key is absent; when both are present they
+must agree to 1e-9 relative. The physical table is kept on the :class:`Scene` so that
+``to_dict``/``to_toml`` (which write it together with the resolved dimensionless keys) round-trip.
+
+Components are built generically from the entry-point registries (``registry.get(kind)(**params)``).
+Adhesion models and solvers whose module cannot be imported yet are kept as a
+:class:`ComponentSpec` (kind + parameters) and resolved by :meth:`Scene.resolve`.
+"""
+from __future__ import annotations
+
+import difflib
+import math
+import re
+import tomllib
+import types
+from pathlib import Path
+from typing import Any, Mapping
+
+import attrs
+import numpy as np
+
+from . import _registry
+from ._toml import dumps
+from .errors import PluginError, ValidationError
+
+#: Scene sections and the registry that builds each component section.
+COMPONENT_SECTIONS = {"profile": "profiles", "rheology": "rheologies", "kernel": "kernels",
+                      "adhesion": "adhesion", "solver": "solvers"}
+SECTIONS = (*COMPONENT_SECTIONS, "load", "sliding", "physical")
+TOP_LEVEL_KEYS = ("poisson",)
+DEFAULT_KERNEL = "half-plane"
+DEFAULT_SOLVER = {True: "broyden", False: "bisection"}  # keyed by "is adhesive"
+DEFAULT_EQUILIBRIUM_DISTANCE = 1e-9  # m, Z0 of the Tabor parameter
+
+#: ``[physical]`` keys: SI unit, allowed range (lo, hi, lo_open) and meaning.
+PHYSICAL_KEYS: dict[str, tuple[str, tuple[float | None, float | None, bool], str]] = {
+    "E0": ("Pa", (0.0, None, True), "relaxed (rubbery) Young modulus E0"),
+    "poisson": ("1", (-1.0, 0.5, True), "Poisson ratio ν"),
+    "wavelength": ("m", (0.0, None, True), "fundamental wavelength λ0 = 2π/q0"),
+    "work_of_adhesion": ("J/m^2", (0.0, None, False), "Dupré work of adhesion Δγ"),
+    "tau": ("s", (0.0, None, True), "reference (creep) time τ of the rheology"),
+    "velocity": ("m/s", (0.0, None, False), "sliding speed V"),
+    "rms": ("m", (0.0, None, True), "root-mean-square roughness r_rms"),
+    "amplitude": ("m", (0.0, None, True), "profile amplitude Λ = max r"),
+    "thickness": ("m", (0.0, None, True), "layer thickness d"),
+    "mean_pressure": ("Pa", (None, None, False), "remote mean pressure p∞ (negative = tensile)"),
+    "penetration": ("m", (None, None, False), "penetration Δ"),
+    "equilibrium_distance": ("m", (0.0, None, True), "equilibrium distance Z0 (Tabor parameter)"),
+}
+
+# (section, key) <- (physical sources, physical keys also needed)
+_TARGETS: dict[tuple[str, str], tuple[tuple[str, ...], tuple[str, ...]]] = {
+    ("profile", "rms"): (("rms",), ("wavelength",)),
+    ("profile", "amplitude"): (("amplitude",), ("wavelength",)),
+    ("kernel", "thickness"): (("thickness",), ("wavelength",)),
+    ("adhesion", "gamma"): (("work_of_adhesion",), ("E0", "wavelength")),
+    ("load", "mean_pressure"): (("mean_pressure",), ("E0",)),
+    ("load", "penetration"): (("penetration",), ("wavelength",)),
+    ("sliding", "zeta"): (("velocity", "tau"), ("wavelength",)),
+}
+_REL_TOL = 1e-9
+
+
+# ---------------------------------------------------------------------------------------------
+# small helpers
+def _is_number(value: Any) -> bool:
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(
+        value, (bool, np.bool_))
+
+
+def _as_float(value: Any) -> Any:
+    return float(value) if _is_number(value) else value
+
+
+def _check_number(field: str, value: Any, lo=None, hi=None, lo_open=False) -> None:
+    interval = (f"{'(' if lo_open else '['}{'-inf' if lo is None else lo}, "
+                f"{'inf' if hi is None else hi}]")
+    desc = f"a finite real number in {interval}"
+    if not _is_number(value) or not math.isfinite(float(value)):
+        raise ValidationError(field, value, desc)
+    v = float(value)
+    if lo is not None and (v < lo or (lo_open and v == lo)):
+        raise ValidationError(field, value, desc)
+    if hi is not None and v > hi:
+        raise ValidationError(field, value, desc)
+
+
+def _freeze(mapping: Mapping | None) -> Mapping | None:
+    if mapping is None:
+        return None
+    if not isinstance(mapping, Mapping):
+        raise ValidationError("physical", mapping, "a table of SI values")
+    return types.MappingProxyType({k: _as_float(v) for k, v in mapping.items()})
+
+
+def _agree(a: float, b: float) -> bool:
+    return math.isclose(float(a), float(b), rel_tol=_REL_TOL, abs_tol=0.0)
+
+
+def _registry_for(section: str) -> _registry.Registry:
+    return _registry.REGISTRIES[COMPONENT_SECTIONS[section]]
+
+
+def _init_fields(cls: type) -> dict[str, attrs.Attribute]:
+    """``{keyword: attribute}`` of the constructor arguments of an attrs class."""
+    if not attrs.has(cls):
+        raise PluginError(f"{cls.__module__}.{cls.__qualname__} is not an attrs class; components "
+                          "must be frozen attrs classes")
+    return {f.alias: f for f in attrs.fields(cls) if f.init}
+
+
+def _plain(value: Any) -> Any:
+    """A component field value as plain data (numpy → lists/floats, attrs → dicts)."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, (np.floating, np.integer, np.bool_)):
+        return value.item()
+    if attrs.has(type(value)):
+        return {k: _plain(getattr(value, f.name)) for k, f in _init_fields(type(value)).items()}
+    if isinstance(value, Mapping):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    return value
+
+
+# ---------------------------------------------------------------------------------------------
+@attrs.frozen(kw_only=True)
+class ComponentSpec:
+    """A component given by its registered name and parameters, built on demand.
+
+    Used for components whose class cannot be imported when the scene is read (and by
+    :meth:`Scene.resolve`). ``resolve(section)`` builds it with the same checks as a scene file.
+    """
+
+    kind: str = attrs.field(validator=attrs.validators.instance_of(str))
+    params: Mapping[str, Any] = attrs.field(
+        factory=dict, converter=lambda p: types.MappingProxyType(dict(p)), hash=False)
+
+    def resolve(self, section: str) -> Any:
+        """The component object (``section`` is ``"solver"``, ``"adhesion"``, ...)."""
+        return build_component(section, {"kind": self.kind, **self.params})
+
+
+def build_component(section: str, table: Mapping[str, Any], *, lazy: bool = False) -> Any:
+    """Build the component of scene section ``section`` from its table (``kind`` + parameters).
+
+    Raises :class:`ValidationError` naming ``section.key`` for an unknown kind, an unknown or
+    missing key and a rejected value; a plugin that fails to import raises :class:`PluginError`,
+    unless ``lazy`` is set, in which case a :class:`ComponentSpec` is returned instead.
+    """
+    registry = _registry_for(section)
+    params = dict(table)
+    kind = params.pop("kind", None)
+    try:
+        if not isinstance(kind, str):
+            raise PluginError(f"{section}.kind must be a string")
+        cls = registry.get(kind)  # cached after the first look-up
+    except PluginError as exc:
+        names = registry.names()
+        if isinstance(kind, str) and kind in names:  # registered, but failed to load
+            if lazy and isinstance(exc.__cause__, ImportError):
+                return ComponentSpec(kind=kind, params=params)
+            raise
+        close = difflib.get_close_matches(kind, names, n=1) if isinstance(kind, str) else []
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        raise ValidationError(f"{section}.kind", kind, f"one of the registered {registry.group} "
+                                                        f"names {names}{hint}") from None
+    return _instantiate(section, kind, cls, params)
+
+
+def _instantiate(section: str, kind: str, cls: type, params: dict[str, Any]) -> Any:
+    fields = _init_fields(cls)
+    for key in params:
+        if key not in fields:
+            raise ValidationError(f"{section}.{key}", params[key],
+                                  f"a key of {section} kind {kind!r}: one of {sorted(fields)}")
+    required = [k for k, f in fields.items() if f.default is attrs.NOTHING]
+    for key in required:
+        if key not in params:
+            raise ValidationError(f"{section}.{key}", None,
+                                  f"a value ({section} kind {kind!r} requires {required})")
+    params = _nested_options(section, cls, fields, params)
+    try:
+        return cls(**params)
+    except ValidationError as exc:
+        attr = exc.field.rsplit(".", 1)[-1]  # "StandardLinearSolid.beta" -> "rheology.beta"
+        raise ValidationError(f"{section}.{attr}", exc.value, exc.allowed) from exc
+    except (TypeError, ValueError) as exc:
+        message = str(exc).replace("\n", " ")
+        named = [k for k in fields if re.search(rf"\b{re.escape(k)}\b", message)]
+        if len(named) == 1:
+            raise ValidationError(f"{section}.{named[0]}", params.get(named[0]), message) from exc
+        raise ValidationError(section, params, message) from exc
+
+
+def _nested_options(section: str, cls: type, fields: dict, params: dict) -> dict:
+    """Build attrs-typed fields given as sub-tables (``[solver.options]``) into their class."""
+    nested = [k for k, v in params.items() if isinstance(v, Mapping)]
+    if not nested:
+        return params
+    try:
+        attrs.resolve_types(cls)
+    except Exception:  # unresolvable annotations: pass the tables through unchanged
+        return params
+    out = dict(params)
+    for key in nested:
+        ftype = fields[key].type
+        if isinstance(ftype, type) and attrs.has(ftype):
+            out[key] = _instantiate(f"{section}.{key}", ftype.__name__, ftype, dict(params[key]))
+    return out
+
+
+def dump_component(section: str, component: Any) -> dict[str, Any]:
+    """``{"kind": registered name, **parameters}`` of a component or :class:`ComponentSpec`."""
+    if isinstance(component, ComponentSpec):
+        return {"kind": component.kind,
+                **{k: _plain(v) for k, v in component.params.items() if v is not None}}
+    out = {"kind": kind_of(section, component)}
+    for key, f in _init_fields(type(component)).items():
+        value = getattr(component, f.name)
+        if value is None and f.default is None:
+            continue  # TOML has no null: an omitted key rebuilds the default
+        out[key] = _plain(value)
+    return out
+
+
+def kind_of(section: str, component: Any) -> str:
+    """The registered name of a component (or of a :class:`ComponentSpec`)."""
+    if isinstance(component, ComponentSpec):
+        return component.kind
+    registry = _registry_for(section)
+    cls = type(component)
+    for name, cached in registry._cache.items():  # classes already looked up (no metadata scan)
+        if cached is cls:
+            return name
+    return registry.name_of(component)
+
+
+def _param(component: Any, key: str) -> Any:
+    if isinstance(component, ComponentSpec):
+        return component.params.get(key)
+    return getattr(component, key, None)
+
+
+def _has_param(component: Any, key: str) -> bool | None:
+    """Whether the component takes ``key`` (``None`` if unknown: an unresolved spec)."""
+    if isinstance(component, ComponentSpec):
+        return None
+    return key in _init_fields(type(component))
+
+
+# ---------------------------------------------------------------------------------------------
+def _optional_number(inst, attribute, value):
+    if value is not None:
+        _check_number(f"load.{attribute.name}", value)
+
+
+@attrs.frozen(kw_only=True)
+class Load:
+    """The load control: exactly one of ``mean_pressure`` (p̃∞, eq. 4.17, any finite real;
+    negative is a tensile load, legal with adhesion) and ``penetration`` (Δ̃ = Δ/Λ, finite)."""
+
+    mean_pressure: float | None = attrs.field(default=None, converter=_as_float,
+                                              validator=_optional_number)
+    penetration: float | None = attrs.field(default=None, converter=_as_float,
+                                            validator=_optional_number)
+
+    def __attrs_post_init__(self):
+        if (self.mean_pressure is None) == (self.penetration is None):
+            raise ValidationError("load", {"mean_pressure": self.mean_pressure,
+                                           "penetration": self.penetration},
+                                  "exactly one of load.mean_pressure and load.penetration")
+
+    @property
+    def controlled(self) -> str:
+        """``"mean_pressure"`` (load control) or ``"penetration"`` (displacement control)."""
+        return "mean_pressure" if self.mean_pressure is not None else "penetration"
+
+    @property
+    def value(self) -> float:
+        """The controlled value."""
+        return self.mean_pressure if self.mean_pressure is not None else self.penetration
+
+
+def _is_instance_of_base(kind: str):
+    def check(inst, attribute, value):
+        if isinstance(value, ComponentSpec) and attribute.name in ("adhesion", "solver"):
+            return
+        base = _registry._base(kind)()
+        if not isinstance(value, base):
+            raise ValidationError(f"Scene.{attribute.name}", value,
+                                  f"an instance of {base.__module__}.{base.__qualname__}")
+    return check
+
+
+def _default_kernel():
+    return build_component("kernel", {"kind": DEFAULT_KERNEL})
+
+
+def _default_adhesion():
+    return build_component("adhesion", {"kind": "none"}, lazy=True)
+
+
+def _default_solver(scene: "Scene"):
+    adhesive = kind_of("adhesion", scene.adhesion) != "none"
+    return build_component("solver", {"kind": DEFAULT_SOLVER[adhesive]}, lazy=True)
+
+
+def _default_poisson(scene: "Scene"):
+    nu = getattr(scene.kernel, "poisson", None)
+    return 0.5 if nu is None else float(nu)
+
+
+def _check_zeta(inst, attribute, value):
+    _check_number("sliding.zeta", value, lo=0.0)
+
+
+def _check_poisson(inst, attribute, value):
+    _check_number("poisson", value, lo=-1.0, hi=0.5, lo_open=True)
+
+
+def _check_physical(inst, attribute, value):
+    if value is None:
+        return
+    for key, v in value.items():
+        if key not in PHYSICAL_KEYS:
+            raise ValidationError(f"physical.{key}", v, f"one of {list(PHYSICAL_KEYS)}")
+        lo, hi, lo_open = PHYSICAL_KEYS[key][1]
+        _check_number(f"physical.{key}", v, lo=lo, hi=hi, lo_open=lo_open)
+
+
+@attrs.frozen(kw_only=True)
+class Scene:
+    """One steady-sliding contact problem in the dimensionless groups of eq. 4.17.
+
+    Parameters
+    ----------
+    profile : Profile
+        The rigid periodic profile (heights in q0·r units).
+    rheology : Rheology
+        The viscoelastic solid (dimensionless: E0 = 1, τ = 1).
+    kernel : GreenKernel, optional
+        Elastic geometry; default the half-plane.
+    adhesion : AdhesionModel or ComponentSpec, optional
+        Default ``"none"``.
+    solver : NonlinearSolver or ComponentSpec, optional
+        Default ``"broyden"`` with adhesion, ``"bisection"`` without.
+    load : Load
+        ``mean_pressure`` p̃∞ or ``penetration`` Δ̃.
+    zeta : float
+        ``ζ = q0·V·τ >= 0``; 0 is the relaxed (rubbery) elastic limit.
+    poisson : float, optional
+        ν in (-1, 0.5]; default the kernel's ν if it has one, else 0.5. Enters only the unit
+        conversion (1-ν²) and must equal the kernel's ν when the kernel has one.
+    physical : mapping, optional
+        The ``[physical]`` table in SI units (see :data:`PHYSICAL_KEYS`), kept for round trips and
+        for :func:`viscocontact.groups.dimensionless_groups`; it must agree with the
+        dimensionless values.
+
+    Examples
+    --------
+    >>> scene = Scene.from_toml('''
+    ... [profile]
+    ... kind = "sinusoid"
+    ... amplitude = 0.05
+    ... [rheology]
+    ... kind = "standard-linear-solid"
+    ... beta = 10.0
+    ... [load]
+    ... mean_pressure = 0.3
+    ... [sliding]
+    ... zeta = 0.01
+    ... ''')
+    >>> scene.load.mean_pressure, scene.zeta
+    (0.3, 0.01)
+    >>> Scene.from_toml(scene.to_toml()) == scene
+    True
+    """
+
+    profile: Any = attrs.field(validator=_is_instance_of_base("profiles"))
+    rheology: Any = attrs.field(validator=_is_instance_of_base("rheologies"))
+    kernel: Any = attrs.field(factory=_default_kernel, validator=_is_instance_of_base("kernels"))
+    adhesion: Any = attrs.field(factory=_default_adhesion,
+                                validator=_is_instance_of_base("adhesion"))
+    solver: Any = attrs.field(default=attrs.Factory(_default_solver, takes_self=True),
+                              validator=_is_instance_of_base("solvers"))
+    load: Load = attrs.field(validator=attrs.validators.instance_of(Load))
+    zeta: float = attrs.field(converter=_as_float, validator=_check_zeta)
+    poisson: float = attrs.field(default=attrs.Factory(_default_poisson, takes_self=True),
+                                 converter=_as_float, validator=_check_poisson)
+    physical: Mapping[str, float] | None = attrs.field(default=None, converter=_freeze,
+                                                       validator=_check_physical, hash=False)
+
+    def __attrs_post_init__(self):
+        knu = getattr(self.kernel, "poisson", None)
+        if knu is not None and not _agree(knu, self.poisson):
+            raise ValidationError("kernel.poisson", knu, f"the scene's poisson = {self.poisson!r} "
+                                                         "(one material, one Poisson ratio)")
+        if self.physical is not None:
+            self._check_physical_agrees()
+
+    # ---- physical consistency --------------------------------------------------------------
+    def _section_value(self, section: str, key: str) -> tuple[Any, bool | None]:
+        if section == "load":
+            return getattr(self.load, key), True
+        if section == "sliding":
+            return self.zeta, True
+        component = getattr(self, section)
+        return _param(component, key), _has_param(component, key)
+
+    def _check_physical_agrees(self) -> None:
+        phys = self.physical
+        length = getattr(self.profile, "length", None)  # a measured profile's λ0 (m)
+        if "wavelength" in phys and _is_number(length) and not _agree(length, phys["wavelength"]):
+            raise ValidationError("physical.wavelength", phys["wavelength"],
+                                  f"the profile's own length λ0 = {length!r} m")
+        if "poisson" in phys and not _agree(phys["poisson"], self.poisson):
+            raise ValidationError("poisson", self.poisson,
+                                  f"to agree with physical.poisson = {phys['poisson']!r}")
+        for section in ("profile", "kernel", "adhesion", "load", "sliding"):
+            targets = physical_targets(section, phys, self.poisson,
+                                       amplitude=lambda: self.profile.amplitude)
+            for key, (value, source) in targets.items():
+                if section == "adhesion" and not self.adhesive:
+                    raise _none_adhesion(phys)
+                current, takes = self._section_value(section, key)
+                if takes is False:
+                    raise _no_target(section, key, kind_of(section, getattr(self, section)),
+                                     source, phys, getattr(self, section))
+                if current is None or not _agree(current, value):
+                    raise _disagree(section, key, current, value, source, phys)
+
+    # ---- (de)serialisation -----------------------------------------------------------------
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> "Scene":
+        """Build a scene from the parsed scene table; see the module docstring and docs/scene.md."""
+        return _from_dict(data)
+
+    @classmethod
+    def from_toml(cls, source: str | Path) -> "Scene":
+        """Read a scene from a TOML file path or from TOML text.
+
+        A :class:`str` containing a newline or a ``=`` that is not an existing file is read as
+        TOML text; anything else is a path (``FileNotFoundError`` if missing). TOML syntax errors
+        raise :class:`tomllib.TOMLDecodeError`.
+        """
+        if isinstance(source, Path):
+            text = source.read_text(encoding="utf-8")
+        elif "\n" in source or ("=" in source and not Path(source).is_file()):
+            text = source
+        else:
+            text = Path(source).read_text(encoding="utf-8")
+        return cls.from_dict(tomllib.loads(text))
+
+    def to_dict(self) -> dict[str, Any]:
+        """The scene table: resolved dimensionless keys, plus ``physical`` when present."""
+        out: dict[str, Any] = {"poisson": self.poisson}
+        for section in COMPONENT_SECTIONS:
+            out[section] = dump_component(section, getattr(self, section))
+        out["load"] = {self.load.controlled: self.load.value}
+        out["sliding"] = {"zeta": self.zeta}
+        if self.physical is not None:
+            out["physical"] = dict(self.physical)
+        return out
+
+    def to_toml(self) -> str:
+        """TOML text of :meth:`to_dict`; ``Scene.from_toml(scene.to_toml()) == scene``."""
+        return dumps(self.to_dict())
+
+    def resolve(self) -> "Scene":
+        """This scene with every :class:`ComponentSpec` built into its component object."""
+        changes = {s: getattr(self, s).resolve(s) for s in ("adhesion", "solver")
+                   if isinstance(getattr(self, s), ComponentSpec)}
+        return attrs.evolve(self, **changes) if changes else self
+
+    @property
+    def adhesive(self) -> bool:
+        """Whether the adhesion model is anything but ``"none"``."""
+        return kind_of("adhesion", self.adhesion) != "none"
+
+
+# ---------------------------------------------------------------------------------------------
+# the physical boundary
+def physical_targets(section: str, physical: Mapping[str, float], poisson: float,
+                     amplitude=None) -> dict[str, tuple[float, str]]:
+    """Dimensionless values of ``section`` implied by the physical table.
+
+    Returns ``{key: (value, "physical.source")}``. ``amplitude`` is a callable returning the built
+    profile's Λ̃ = q0·max r (needed for the load). Raises :class:`ValidationError` naming the
+    missing physical key when a conversion lacks an input (e.g. ``physical.E0``).
+    """
+    out: dict[str, tuple[float, str]] = {}
+    one_minus_nu2 = 1.0 - poisson**2
+    for (sec, key), (sources, needs) in _TARGETS.items():
+        if sec != section or not any(s in physical for s in sources):
+            continue
+        present = [s for s in sources if s in physical]
+        for req in (*sources, *needs):
+            if req not in physical:
+                unit, _, meaning = PHYSICAL_KEYS[req]
+                raise ValidationError(f"physical.{req}", None,
+                                      f"a value ({meaning}, {unit}): needed to convert "
+                                      f"physical.{present[0]} into {sec}.{key}")
+        P = physical
+        q0 = 2.0 * math.pi / P["wavelength"] if "wavelength" in P else None
+        if key in ("rms", "amplitude", "thickness"):
+            value = q0 * P[key]
+        elif key == "gamma":
+            value = one_minus_nu2 * q0 * P["work_of_adhesion"] / (math.pi * P["E0"])
+        elif key == "mean_pressure":
+            value = 2.0 * one_minus_nu2 * P["mean_pressure"] / (P["E0"] * amplitude())
+        elif key == "penetration":
+            value = P["penetration"] * q0 / amplitude()
+        else:  # zeta
+            value = q0 * P["velocity"] * P["tau"]
+        out[key] = (float(value), " and ".join(f"physical.{s}" for s in sources))
+    return out
+
+
+def _disagree(section, key, current, value, source, phys):
+    given = ", ".join(f"{s} = {phys[s.split('.')[1]]!r}" for s in source.split(" and "))
+    return ValidationError(f"{section}.{key}", current,
+                           f"{value!r} (to 1e-9 relative), the value converted from {given}")
+
+
+def _no_target(section, key, kind, source, phys, component):
+    first = source.split(" and ")[0]
+    fields = [] if isinstance(component, ComponentSpec) else sorted(_init_fields(type(component)))
+    return ValidationError(first, phys[first.split(".")[1]],
+                           f"a {section} kind with a {key!r} key ({section} kind {kind!r} has "
+                           f"{fields})")
+
+
+def _none_adhesion(phys):
+    return ValidationError("physical.work_of_adhesion", phys["work_of_adhesion"],
+                           "no work of adhesion when adhesion.kind = 'none' "
+                           "(use kind = 'energy-balance')")
+
+
+def _fill(section: str, params: dict[str, Any], targets: dict[str, tuple[float, str]],
+          phys: Mapping[str, float], fields: dict | None, kind: str) -> None:
+    for key, (value, source) in targets.items():
+        if fields is not None and key not in fields:
+            first = source.split(" and ")[0]
+            raise ValidationError(first, phys[first.split(".")[1]],
+                                  f"a {section} kind with a {key!r} key ({section} kind {kind!r} "
+                                  f"has {sorted(fields)})")
+        if key not in params:
+            params[key] = value
+        elif not _is_number(params[key]) or not _agree(params[key], value):
+            raise _disagree(section, key, params[key], value, source, phys)
+
+
+def _section(data: Mapping[str, Any], name: str) -> dict[str, Any] | None:
+    table = data.get(name)
+    if table is None:
+        return None
+    if not isinstance(table, Mapping):
+        raise ValidationError(name, table, f"a table ([{name}])")
+    return dict(table)
+
+
+def _kind_class(section: str, params: dict[str, Any]) -> tuple[str | None, dict | None]:
+    """(kind, init fields) if the kind is registered and loadable, else (kind, None)."""
+    kind = params.get("kind")
+    try:
+        return kind, _init_fields(_registry_for(section).get(kind))
+    except (PluginError, TypeError):
+        return kind, None
+
+
+def _resolve_poisson(data, physical, kernel_table) -> float:
+    candidates = []
+    if "poisson" in data:
+        candidates.append(("poisson", data["poisson"]))
+    if "poisson" in physical:
+        candidates.append(("physical.poisson", physical["poisson"]))
+    if kernel_table is not None and "poisson" in kernel_table:
+        candidates.append(("kernel.poisson", kernel_table["poisson"]))
+    for name, value in candidates:
+        _check_number(name, value, lo=-1.0, hi=0.5, lo_open=True)
+    for name, value in candidates[1:]:
+        if not _agree(value, candidates[0][1]):
+            raise ValidationError(name, value, f"to agree with {candidates[0][0]} = "
+                                               f"{candidates[0][1]!r} (one material, one ν)")
+    return float(candidates[0][1]) if candidates else 0.5
+
+
+def _from_dict(data: Mapping[str, Any]) -> Scene:
+    if not isinstance(data, Mapping):
+        raise ValidationError("scene", data, "a table of sections")
+    for key, value in data.items():
+        if isinstance(value, Mapping):
+            if key not in SECTIONS:
+                raise ValidationError(key, "[table]", f"one of the sections {list(SECTIONS)}")
+        elif key not in TOP_LEVEL_KEYS:
+            raise ValidationError(key, value, f"one of the sections {list(SECTIONS)} or a "
+                                              f"top-level key in {list(TOP_LEVEL_KEYS)}")
+    physical = _section(data, "physical")
+    _check_physical(None, None, physical)
+    phys = physical or {}
+    tables = {s: _section(data, s) for s in COMPONENT_SECTIONS}
+    for required in ("profile", "rheology"):
+        if tables[required] is None:
+            raise ValidationError(required, None, f"a [{required}] table with a 'kind'")
+    if tables["kernel"] is None:
+        tables["kernel"] = {"kind": DEFAULT_KERNEL}
+    if tables["adhesion"] is None:
+        tables["adhesion"] = {"kind": "energy-balance" if "work_of_adhesion" in phys else "none"}
+    nu = _resolve_poisson(data, phys, tables["kernel"])
+
+    # profile (its Λ̃ is needed to convert the load)
+    params = tables["profile"]
+    kind, fields = _kind_class("profile", params)
+    _fill("profile", params, physical_targets("profile", phys, nu), phys, fields, kind)
+    profile = build_component("profile", params)
+    rheology = build_component("rheology", tables["rheology"])
+
+    params = tables["kernel"]
+    kind, fields = _kind_class("kernel", params)
+    _fill("kernel", params, physical_targets("kernel", phys, nu), phys, fields, kind)
+    if fields is not None and "poisson" in fields and "poisson" not in params:
+        params["poisson"] = nu
+    kernel = build_component("kernel", params)
+
+    params = tables["adhesion"]
+    kind, fields = _kind_class("adhesion", params)
+    targets = physical_targets("adhesion", phys, nu)
+    if targets and kind == "none":
+        raise _none_adhesion(phys)
+    _fill("adhesion", params, targets, phys, fields, kind)
+    adhesion = build_component("adhesion", params, lazy=True)
+
+    if tables["solver"] is None:
+        tables["solver"] = {"kind": DEFAULT_SOLVER[kind_of("adhesion", adhesion) != "none"]}
+    solver = build_component("solver", tables["solver"], lazy=True)
+
+    load_table = _section(data, "load") or {}
+    for key in load_table:
+        if key not in ("mean_pressure", "penetration"):
+            raise ValidationError(f"load.{key}", load_table[key],
+                                  "a key of [load]: 'mean_pressure' or 'penetration'")
+    targets = physical_targets("load", phys, nu, amplitude=lambda: profile.amplitude)
+    _fill("load", load_table, targets, phys, None, "load")
+    if not load_table:
+        raise ValidationError("load", None, "exactly one of load.mean_pressure and "
+                                            "load.penetration (or physical.mean_pressure / "
+                                            "physical.penetration)")
+    load = Load(**load_table)
+
+    sliding = _section(data, "sliding") or {}
+    for key in sliding:
+        if key != "zeta":
+            raise ValidationError(f"sliding.{key}", sliding[key], "a key of [sliding]: 'zeta'")
+    _fill("sliding", sliding, physical_targets("sliding", phys, nu), phys, None, "sliding")
+    if "zeta" not in sliding:
+        if rheology.modulus_ratio != 1.0:
+            raise ValidationError("sliding.zeta", None,
+                                  "a value >= 0 (ζ = q0·V·τ; or physical.velocity and "
+                                  "physical.tau): required for a viscoelastic rheology")
+        sliding["zeta"] = 0.0
+
+    return Scene(profile=profile, rheology=rheology, kernel=kernel, adhesion=adhesion,
+                 solver=solver, load=load, zeta=sliding["zeta"], poisson=nu, physical=physical)

@@ -1,0 +1,197 @@
+"""Machinery shared by the built-in solvers: finite-difference Jacobians, counted evaluations,
+step limits.
+
+Nothing here knows about a particular method; each solver module holds only its own loop.
+
+* :class:`FiniteDifference` — forward (eq. 4.49) or central (eq. 4.50) Jacobian with the step
+  ``h_i = rel_step·max(|x_i|, typical_scale)``; returns ``(J, evaluations)``.
+* :class:`CountedResidual` — wraps ``problem.residual``: counts every call, enforces
+  ``Tolerances.max_evaluations`` (raising :class:`BudgetExhausted` *before* a call that would
+  exceed it) and never catches what ``residual`` raises.
+* :func:`limit_step` — scale a step by one common factor so that ``|Δx_i| <= max_step_i``.
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+import attrs
+import numpy as np
+
+from .._validation import one_of, positive
+from .base import NonlinearProblem, SolverResult, Status, Tolerances, optional
+
+__all__ = ["BudgetExhausted", "CountedResidual", "FiniteDifference", "fd_jacobian",
+           "limit_step", "max_abs", "problem_jacobian"]
+
+DIFFERENCES = ("forward", "central")
+
+
+@attrs.frozen(kw_only=True)
+class FiniteDifference:
+    """Finite-difference approximation of the Jacobian ``J_ij = ∂r_i/∂x_j`` (thesis §4.5.5).
+
+    Parameters
+    ----------
+    scheme : {"forward", "central"}
+        ``"forward"`` (eq. 4.49, first order, ``n`` evaluations besides ``r(x)``) or
+        ``"central"`` (eq. 4.50, second order, ``2n`` evaluations).
+    rel_step : float
+        Relative step: ``h_i = rel_step·max(|x_i|, typical_scale)``. About ``√ε ≈ 1e-8`` is
+        optimal for forward differences and ``ε^(1/3) ≈ 6e-6`` for central ones on a residual
+        computed to machine precision; use larger steps for noisy residuals.
+    typical_scale : float
+        Magnitude below which ``|x_i|`` is not trusted to set the step (so that ``x_i = 0`` still
+        gets ``h_i = rel_step·typical_scale``), in the units of x.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> fd = FiniteDifference(scheme="central", rel_step=1e-5)
+    >>> J, n = fd.jacobian(lambda x: np.array([x[0]**2, x[0]*x[1]]), np.array([1.0, 2.0]))
+    >>> np.round(J, 6).tolist(), n
+    ([[2.0, 0.0], [2.0, 1.0]], 4)
+    """
+
+    scheme: str = attrs.field(default="forward", validator=one_of(DIFFERENCES))
+    rel_step: float = attrs.field(default=1e-7, converter=float, validator=positive)
+    typical_scale: float = attrs.field(default=1.0, converter=float, validator=positive)
+
+    def steps(self, x: np.ndarray) -> np.ndarray:
+        """The steps ``h_i``, rounded so that ``x_i + h_i`` is exact in floating point."""
+        x = np.asarray(x, dtype=float)
+        h = self.rel_step * np.maximum(np.abs(x), self.typical_scale)
+        return (x + h) - x
+
+    def jacobian(self, fun: Callable[[np.ndarray], np.ndarray], x: np.ndarray,
+                 f0: np.ndarray | None = None) -> tuple[np.ndarray, int]:
+        """``(J, evaluations)``; ``f0 = fun(x)`` is reused by the forward scheme when given.
+
+        Exceptions raised by ``fun`` propagate unchanged.
+        """
+        x = np.asarray(x, dtype=float)
+        h = self.steps(x)
+        n = x.size
+        count = 0
+        if self.scheme == "forward" and f0 is None:
+            f0 = np.asarray(fun(x.copy()), dtype=float)
+            count += 1
+        columns = []
+        for j in range(n):
+            xp = x.copy()
+            xp[j] += h[j]
+            fp = np.asarray(fun(xp), dtype=float)
+            count += 1
+            if self.scheme == "forward":
+                columns.append((fp - f0) / h[j])
+            else:
+                xm = x.copy()
+                xm[j] -= h[j]
+                fm = np.asarray(fun(xm), dtype=float)
+                count += 1
+                columns.append((fp - fm) / (2.0 * h[j]))
+        return np.column_stack(columns) if columns else np.zeros((0, 0)), count
+
+
+def fd_jacobian(fun, x, f0=None, *, scheme: str = "forward", rel_step: float = 1e-7,
+                typical_scale: float = 1.0) -> tuple[np.ndarray, int]:
+    """Functional form of :meth:`FiniteDifference.jacobian`."""
+    return FiniteDifference(scheme=scheme, rel_step=rel_step,
+                            typical_scale=typical_scale).jacobian(fun, x, f0)
+
+
+class BudgetExhausted(Exception):
+    """Raised by :class:`CountedResidual` instead of a call beyond ``max_evaluations``.
+
+    Solvers catch this class only; it never comes from a problem's ``residual``.
+    """
+
+
+class CountedResidual:
+    """``problem.residual`` with a call counter and an evaluation budget.
+
+    Calling it returns a float array (a copy of ``x`` is passed, so the problem may keep it).
+    """
+
+    def __init__(self, problem: NonlinearProblem, budget: int):
+        self._residual = problem.residual
+        self.budget = budget
+        self.count = 0
+
+    def __call__(self, x: np.ndarray) -> np.ndarray:
+        if self.count >= self.budget:
+            raise BudgetExhausted
+        self.count += 1
+        return np.asarray(self._residual(np.array(x, dtype=float)), dtype=float).reshape(-1)
+
+
+def max_abs(v: np.ndarray) -> float:
+    """``max_i |v_i|`` (0 for an empty array, inf when v has NaN)."""
+    v = np.asarray(v, dtype=float)
+    if v.size == 0:
+        return 0.0
+    if not np.all(np.isfinite(v)):
+        return float("inf")
+    return float(np.max(np.abs(v)))
+
+
+def limit_step(problem: NonlinearProblem, x: np.ndarray, dx: np.ndarray) -> tuple[np.ndarray, float]:
+    """Scale ``dx`` by one common factor ``t <= 1`` so that ``|t·dx_i| <= max_step(x)_i``.
+
+    A common factor keeps the direction (a descent direction stays one). Returns
+    ``(t·dx, t)``; without ``problem.max_step`` the step is returned unchanged.
+    """
+    bound_fn = optional(problem, "max_step")
+    if bound_fn is None:
+        return dx, 1.0
+    bound = np.broadcast_to(np.asarray(bound_fn(np.array(x, dtype=float)), dtype=float), dx.shape)
+    big = np.abs(dx) > bound
+    if not np.any(big):
+        return dx, 1.0
+    t = float(np.min(bound[big] / np.abs(dx[big])))
+    return dx * t, t
+
+
+def step_bound(problem: NonlinearProblem, x: np.ndarray) -> np.ndarray:
+    """``max_step(x)`` as an array (inf when the problem has none)."""
+    bound_fn = optional(problem, "max_step")
+    if bound_fn is None:
+        return np.full(np.shape(x), np.inf)
+    return np.broadcast_to(np.asarray(bound_fn(np.array(x, dtype=float)), dtype=float),
+                           np.shape(x)).copy()
+
+
+def problem_jacobian(problem: NonlinearProblem, fun: CountedResidual, x: np.ndarray,
+                     r: np.ndarray, fd: FiniteDifference) -> tuple[np.ndarray, bool]:
+    """``(J, analytic)``: ``problem.jacobian(x)`` when it exists, else finite differences
+    through the counted residual ``fun`` (its counter records the cost)."""
+    jac = optional(problem, "jacobian")
+    if jac is not None:
+        J = np.asarray(jac(np.array(x, dtype=float)), dtype=float)
+        return J.reshape(x.size, x.size), True
+    J, _ = fd.jacobian(fun, x, r)
+    return J, False
+
+
+def linear_solve(J: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``J⁻¹b``; least squares (minimum norm) when J is singular or ill-conditioned."""
+    try:
+        if np.linalg.cond(J) < 1e14:
+            return np.linalg.solve(J, b)
+    except np.linalg.LinAlgError:
+        pass
+    return np.linalg.lstsq(J, b, rcond=None)[0]
+
+
+def result(x: np.ndarray, r: np.ndarray, tolerances: Tolerances, status: Status, message: str,
+           iterations: int, evaluations: int, history: list, **extras) -> SolverResult:
+    """Build a :class:`SolverResult`; ``converged`` is derived from ``max|r| <= tol`` only."""
+    converged = max_abs(r) <= tolerances.residual
+    if converged:
+        status, message = Status.CONVERGED, message or "max|r| <= tolerances.residual"
+    elif status is Status.CONVERGED:  # never claim convergence the residual does not show
+        status = Status.FAILED
+        message = f"internal error: claimed convergence with max|r| = {max_abs(r):.3g}"
+    return SolverResult(x=np.array(x, dtype=float), residual=np.array(r, dtype=float),
+                        converged=converged, status=status, message=message,
+                        iterations=iterations, function_evaluations=evaluations,
+                        residual_history=tuple(float(h) for h in history), extras=dict(extras))
