@@ -102,6 +102,20 @@ class PreparedKernel:
             acc = acc + self.correction(np.mod(x, TWO_PI))
         return acc / np.pi
 
+    def even_antiderivative(self, x):
+        """``F̃(x) + F̃(-x)``: only the non-reciprocal (dissipative) part of the kernel survives.
+
+        ``∫_e [G̃(ξ - y) - G̃(y - ξ)] dy = E(ξ - a) - E(ξ - b)`` with ``E`` this function; it vanishes
+        identically for an elastic kernel (the Clausen part is odd and is skipped).
+        """
+        x = np.asarray(x, dtype=float)
+        acc = np.zeros_like(x)
+        for wi, tab in zip(self.weights, self.tables):
+            acc = acc + wi * (tab.antiderivative(x) + tab.antiderivative(-x))
+        if self.correction is not None:
+            acc = acc + self.correction(np.mod(x, TWO_PI)) + self.correction(np.mod(-x, TWO_PI))
+        return acc / np.pi
+
     def values(self, x):
         """The kernel ``G̃_V(x)`` of eq. 4.19 (times ``S_m`` geometry, plus ``c0``) at points ``x``."""
         x = np.asarray(x, dtype=float)

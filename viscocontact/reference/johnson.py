@@ -72,19 +72,34 @@ class JohnsonWavy:
         A = float(res.x)
         return A, float(self.mean_pressure(A)), float(self.penetration(A))
 
+    def closure(self):
+        """``(Ã, p̃∞)`` at the maximum of ``p̃∞`` on the stable branch: above it the contact snaps
+        shut (full contact); without adhesion ``(2π, β)``."""
+        if self.Gamma == 0:
+            return 2 * np.pi, self.modulus_ratio
+        A_min = self.pull_off("load")[0]
+        res = minimize_scalar(lambda A: -float(self.mean_pressure(A)),
+                              bounds=(A_min, 2 * np.pi - 1e-12), method="bounded",
+                              options={"xatol": 1e-13})
+        return float(res.x), float(self.mean_pressure(res.x))
+
     def area_at_pressure(self, p):
-        """Contact area on the stable (load-controlled) branch at mean pressure ``p``; None if
-        ``p`` is below pull-off or the contact is closed (full contact)."""
+        """Contact area on the stable (load-controlled) branch at mean pressure ``p``; None below
+        pull-off, ``2π`` above closure (full contact)."""
         A_min, p_min, _ = self.pull_off("load")
-        hi = 2 * np.pi - 1e-12
-        if p < p_min or p > float(self.mean_pressure(hi)):
+        A_max, p_max = self.closure()
+        if p < p_min:
             return None
-        return brentq(lambda A: float(self.mean_pressure(A)) - p, A_min, hi, xtol=1e-15)
+        if p >= p_max:
+            return 2 * np.pi
+        return brentq(lambda A: float(self.mean_pressure(A)) - p, A_min, A_max, xtol=1e-15)
 
     def area_at_penetration(self, d):
         """Contact area on the stable (penetration-controlled) branch at ``Δ̃ = d``."""
         A_min, _, d_min = self.pull_off("penetration")
         hi = 2 * np.pi - 1e-12
-        if d < d_min or d > float(self.penetration(hi)):
+        if d < d_min:
             return None
+        if d >= float(self.penetration(hi)):
+            return 2 * np.pi
         return brentq(lambda A: float(self.penetration(A)) - d, A_min, hi, xtol=1e-15)

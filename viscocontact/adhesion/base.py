@@ -1,0 +1,69 @@
+r"""The :class:`AdhesionModel` interface: the closing condition at every contact edge.
+
+Contract for implementers
+-------------------------
+1. A frozen attrs class; the field ``gamma`` (γ̃ of eq. 4.17) if the model has an adhesion energy.
+2. :meth:`residuals` returns one value per edge (order ``X_1, X_2, ...``) that vanishes at
+   equilibrium, is increasing in the stress-intensity factor of the edge (positive means "this edge
+   is too far out, move it inward") and has the units of a stress-intensity factor ``K̃``
+   (``σ̃√(2π r̃)``), so that one tolerance means the same thing for every model.
+3. :meth:`edge_terms` reports, per edge, ``δŨ/δX̃`` and ``δL̃_P/δX̃`` (stored-energy sign; they add
+   up to ``2πγ̃/Λ̃²`` at equilibrium, eq. 4.20) and the effective work of adhesion (eq. 4.56).
+Both receive an :class:`~viscocontact.contact.edges.EdgeContext`, which computes stress-intensity
+factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
+"""
+from __future__ import annotations
+
+import abc
+
+import attrs
+import numpy as np
+
+
+@attrs.frozen(kw_only=True)
+class EdgeTerms:
+    """Energy terms at every edge (dimensionless, eq. 4.20 units).
+
+    Attributes
+    ----------
+    stored : ndarray
+        ``δŨ/δX̃`` (stored elastic energy per unit outward edge advance).
+    nonconservative : ndarray
+        ``δL̃_P/δX̃`` (non-conservative work, eq. 4.14, stored-energy sign).
+    target : float
+        ``2πγ̃/Λ̃²`` (right-hand side of eq. 4.20).
+    effective_work : ndarray
+        ``Δγ_eff/Δγ = (δŨ/δX̃)/target`` (eq. 4.56); NaN without adhesion.
+    stress_intensity : ndarray
+        ``K̃`` at every edge.
+    edge_perturbation : float
+        The ``q0·δX`` used (0: the δX → 0 limit).
+    """
+
+    stored: np.ndarray
+    nonconservative: np.ndarray
+    target: float
+    effective_work: np.ndarray
+    stress_intensity: np.ndarray
+    edge_perturbation: float
+
+
+class AdhesionModel(abc.ABC):
+    """Edge closing condition; see the module docstring for the contract."""
+
+    @property
+    def work_of_adhesion(self) -> float:
+        """γ̃ (0 without adhesion)."""
+        return float(getattr(self, "gamma", 0.0))
+
+    def target(self, amplitude: float) -> float:
+        """``2πγ̃/Λ̃²`` (eq. 4.20)."""
+        return 2.0 * np.pi * self.work_of_adhesion / amplitude**2
+
+    @abc.abstractmethod
+    def residuals(self, ctx) -> np.ndarray:
+        """One residual per edge, in stress-intensity units (see the contract)."""
+
+    @abc.abstractmethod
+    def edge_terms(self, ctx) -> EdgeTerms:
+        """Energy terms at every edge of an equilibrium (for reporting)."""

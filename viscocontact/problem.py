@@ -1,0 +1,499 @@
+r"""The :class:`ContactProblem` orchestrator (thesis §4.4).
+
+It reads like the algorithm: mesh every contact (eqs. 4.21-4.29) → influence matrix of the prepared
+kernel (eq. 4.32) → stresses for the current edges (eq. 4.31, penetration or load control) → one
+residual per edge from the adhesion model (eqs. 4.9-4.20) → a :class:`NonlinearSolver` moves the
+edges → when contacts merge or vanish the solve restarts in the new dimension → once converged,
+the gap is checked on a fine grid: where the profile would penetrate the solid a contact is born,
+and an adhesionless contact carrying tension is split; the solve restarts until nothing changes.
+
+Without an initial contact set the solve follows the approach path: first touch at the highest
+peak, then quasi-static loading in steps of penetration up to the target (load control switches to
+the target load once it is bracketed), so that the same scene always gives the same answer.
+"""
+from __future__ import annotations
+
+import time
+
+import attrs
+import numpy as np
+
+from ._validation import in_range, int_range
+from .adhesion.base import AdhesionModel
+from .adhesion.none import NoAdhesion
+from .contact.edges import EdgeContext
+from .contact.fields import NormalizedProfile, displacement, friction, solve_fields
+from .contact.mesh import build_mesh
+from .contact.topology import TWO_PI, TopologyChange, expanded, negative_regions, repair
+from .kernels.half_plane import HalfPlane
+from .result import ContactResult, SolveStatus
+from .solvers.base import NonlinearSolver, Tolerances
+
+
+@attrs.frozen(kw_only=True)
+class Discretization:
+    """Mesh and checking resolution.
+
+    Parameters
+    ----------
+    elements : int
+        Elements per contact (eq. 4.21's N).
+    clustering : float
+        Exponent n of the node density of eq. 4.27 (>= 1/2).
+    check_points : int
+        Points of the uniform grid on which interpenetration is checked.
+    path_step : float
+        Largest penetration step ``Δ̃`` of the approach path.
+    """
+
+    elements: int = attrs.field(default=64, validator=int_range(8, 4096))
+    clustering: float = attrs.field(default=1.0, validator=in_range(0.5, 4.0))
+    check_points: int = attrs.field(default=2048, validator=int_range(64, 1 << 20))
+    path_step: float = attrs.field(default=0.05, validator=in_range(1e-4, 1.0))
+
+
+MIN_WIDTH = 1e-8
+MIN_GAP = 1e-8
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class Prepared:
+    """What a problem precomputes once: kernel tables, normalised profile, m2."""
+
+    kernel: object
+    shape: NormalizedProfile
+    m2: float
+
+
+class _EdgeSystem:
+    """The nonlinear system in the edge positions for a fixed contact set."""
+
+    def __init__(self, owner: "_Run", control: dict):
+        self.owner = owner
+        self.control = control
+        self.cache = {}
+        self.evaluations = 0
+
+    def evaluate(self, x):
+        key = x.tobytes()
+        if key in self.cache:
+            return self.cache[key]
+        o = self.owner
+        if not np.all(np.isfinite(x)):
+            return None, None, np.full(len(x), np.inf)
+        new, changed, reason, full = repair(x, MIN_WIDTH, MIN_GAP)
+        if changed:
+            raise TopologyChange(reason, new, full)
+        mesh = build_mesh(x, o.disc.elements, o.disc.clustering)
+        fields = solve_fields(mesh, o.prep.kernel, o.prep.shape, **self.control)
+        ctx = EdgeContext(fields, o.prep.kernel, o.prep.shape, o.disc.elements, o.disc.clustering,
+                          o.prep.shape.amplitude)
+        r = o.problem.adhesion.residuals(ctx)
+        self.evaluations += 1
+        self.cache = {key: (fields, ctx, r)}
+        return fields, ctx, r
+
+    def residual(self, x):
+        return self.evaluate(np.asarray(x, dtype=float))[2]
+
+    def orientation(self):
+        n = self.owner.n_edges
+        return np.tile([-1.0, 1.0], n // 2)
+
+    def max_step(self, x):
+        half = 0.5 * (x[1::2] - x[0::2])
+        lim = np.maximum(0.3 * half, 1e-3)
+        return np.repeat(lim, 2)
+
+
+@attrs.frozen(kw_only=True)
+class ContactProblem:
+    """A rigid periodic profile sliding on a viscoelastic solid (dimensionless, eq. 4.17).
+
+    Parameters
+    ----------
+    profile, rheology, kernel, adhesion, solver
+        The components (``kernel`` default half-plane, ``adhesion`` default none, ``solver``
+        required).
+    mean_pressure, penetration : float
+        Exactly one: load control (p̃∞) or penetration control (Δ̃).
+    zeta : float
+        ``ζ = q0 V τ >= 0``.
+    discretization : Discretization
+    tolerances : Tolerances
+        Edge residual tolerance in stress-intensity units.
+    max_restarts : int
+        Largest number of contact-set changes in one equilibrium solve.
+    """
+
+    profile: object
+    rheology: object
+    solver: NonlinearSolver
+    kernel: object = attrs.field(factory=HalfPlane)
+    adhesion: AdhesionModel = attrs.field(factory=NoAdhesion)
+    mean_pressure: float | None = None
+    penetration: float | None = None
+    zeta: float = attrs.field(default=0.0, validator=in_range(0.0))
+    discretization: Discretization = attrs.field(factory=Discretization)
+    tolerances: Tolerances = attrs.field(factory=lambda: Tolerances(residual=1e-9))
+    max_restarts: int = attrs.field(default=200, validator=int_range(1))
+
+    def __attrs_post_init__(self):
+        from .errors import ValidationError
+
+        if (self.mean_pressure is None) == (self.penetration is None):
+            raise ValidationError("load", {"mean_pressure": self.mean_pressure,
+                                           "penetration": self.penetration},
+                                  "exactly one of mean_pressure and penetration")
+
+    @classmethod
+    def from_scene(cls, scene, **options) -> "ContactProblem":
+        """The problem a :class:`~viscocontact.scene.Scene` describes."""
+        scene = scene.resolve()
+        return cls(profile=scene.profile, rheology=scene.rheology, kernel=scene.kernel,
+                   adhesion=scene.adhesion, solver=scene.solver,
+                   mean_pressure=scene.load.mean_pressure, penetration=scene.load.penetration,
+                   zeta=scene.zeta, **options)
+
+    def prepare(self) -> Prepared:
+        """Kernel tables for this rheology and ζ, the normalised profile and its m2."""
+        return Prepared(kernel=self.kernel.prepare(self.rheology, self.zeta),
+                        shape=NormalizedProfile.of(self.profile),
+                        m2=float(self.profile.statistics().m2))
+
+    def solve(self, initial=None, *, fields: bool = False, prepared: Prepared | None = None,
+              raise_on_failure: bool = False) -> ContactResult:
+        """Equilibrium of the problem.
+
+        Parameters
+        ----------
+        initial : ContactResult or array of edges, optional
+            Contact set to start from (a previous solution along a loading path). Without it the
+            approach path from first touch is followed.
+        fields : bool
+            Also return pressure, displacement and gap on the check grid.
+        prepared : Prepared, optional
+            Reuse kernel tables (e.g. along a load path at fixed ζ).
+        raise_on_failure : bool
+            Raise :class:`~viscocontact.errors.ConvergenceError` (carrying the result) instead of
+            returning a result with ``converged = False``.
+        """
+        run = _Run(self, prepared or self.prepare())
+        result = run.solve(initial, fields)
+        if raise_on_failure and not result.converged:
+            from .errors import ConvergenceError
+
+            raise ConvergenceError(result.message, result)
+        return result
+
+
+class _Run:
+    """State of one solve (counters, events)."""
+
+    def __init__(self, problem: ContactProblem, prep: Prepared):
+        self.problem = problem
+        self.prep = prep
+        self.disc = problem.discretization
+        self.iterations = 0
+        self.evaluations = 0
+        self.events: list[str] = []
+        self.history: list[float] = []
+        self.n_edges = 0
+        shape = prep.shape
+        self.origin = shape.peak_position - np.pi
+
+    # ---- checks -----------------------------------------------------------------------------
+    def grid(self):
+        return self.origin + TWO_PI * (np.arange(self.disc.check_points) + 0.5) / self.disc.check_points
+
+    def gap_outside(self, fields):
+        """Gap ``ũ - w`` on the check grid outside the contacts (edges excluded by 1% width)."""
+        x = self.grid()
+        mesh = fields.mesh
+        keep = np.ones(x.shape, bool)
+        for j in range(mesh.n_contacts):
+            a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
+            pad = 0.01 * (b - a) + 1e-9
+            for shift in (-TWO_PI, 0.0, TWO_PI):
+                keep &= ~((x + shift > a - pad) & (x + shift < b + pad))
+        xs = x[keep]
+        if mesh.n_contacts:
+            u = displacement(self.prep.kernel, mesh, fields.sigma, xs)
+        else:
+            u = np.zeros_like(xs)
+        w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
+        return xs, u - w
+
+    def tensile_split(self, fields):
+        """Split adhesionless contacts that carry tension inside (returns new edges or None)."""
+        if not isinstance(self.problem.adhesion, NoAdhesion):
+            return None
+        mesh = fields.mesh
+        sig = fields.sigma
+        scale = np.max(np.abs(sig)) if sig.size else 0.0
+        out, split = [], False
+        for j in range(mesh.n_contacts):
+            sl = mesh.slice(j)
+            s = sig[sl]
+            inner = np.zeros(s.shape, bool)
+            inner[3:-3] = s[3:-3] > 1e-6 * scale
+            if inner.any():
+                idx = np.flatnonzero(inner)
+                lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
+                out += [mesh.edges[2 * j], lo, hi, mesh.edges[2 * j + 1]]
+                split = True
+            else:
+                out += [mesh.edges[2 * j], mesh.edges[2 * j + 1]]
+        return np.array(out) if split else None
+
+    # ---- equilibrium at one control value ---------------------------------------------------
+    def equilibrate(self, edges, control):
+        p = self.problem
+        edges = np.asarray(edges, dtype=float)
+        for _ in range(p.max_restarts):
+            if edges.size == 0:
+                born = self.births_without_contact(control)
+                if born is None:
+                    return self.no_contact(control)
+                edges = born
+                continue
+            self.n_edges = len(edges)
+            system = _EdgeSystem(self, control)
+            try:
+                res = p.solver.solve(system, edges, p.tolerances)
+            except TopologyChange as change:
+                self.evaluations += system.evaluations
+                self.events.append(change.reason)
+                if change.full_contact:
+                    return self.full_contact(control)
+                edges = change.edges
+                continue
+            self.evaluations += system.evaluations
+            self.iterations += res.iterations
+            self.history.extend(float(v) for v in res.residual_history)
+            if not res.converged:
+                fields, ctx, r = system.evaluate(res.x)
+                return ("not_converged", res.x, fields, ctx, float(np.max(np.abs(r))),
+                        f"edge solve did not converge: {res.status.value}: {res.message}")
+            x = res.x
+            fields, ctx, r = system.evaluate(x)
+            xs, gap = self.gap_outside(fields)
+            regions = negative_regions(xs, gap, 1e-9)
+            if regions:
+                new = [v for (a, b, _) in regions for v in (a, b)]
+                merged, _, _, full = repair(np.concatenate([x, new]), MIN_WIDTH, MIN_GAP)
+                self.events.append(f"{len(regions)} contact(s) born")
+                if full:
+                    return self.full_contact(control)
+                edges = merged
+                continue
+            split = self.tensile_split(fields)
+            if split is not None:
+                self.events.append("adhesionless contact split where it carried tension")
+                edges = split
+                continue
+            return ("converged", x, fields, ctx, float(np.max(np.abs(r))), "converged")
+        return ("not_converged", edges, None, None, np.inf,
+                f"contact set still changing after {p.max_restarts} restarts")
+
+    def births_without_contact(self, control):
+        if "penetration" not in control:
+            # load control with no contact: only a compressive target needs one
+            return None if control["mean_pressure"] <= 0 else self.first_touch()[1]
+        x = self.grid()
+        w = self.prep.shape.heights(x) - 1.0 + control["penetration"]
+        regions = negative_regions(x, -w, 0.0)
+        if not regions:
+            return None
+        return np.array([v for (a, b, _) in regions for v in (a, b)])
+
+    def no_contact(self, control):
+        return ("no_contact", np.zeros(0), None, None, 0.0, "no contact at this load")
+
+    def full_contact(self, control):
+        return ("full_contact", np.zeros(0), None, None, 0.0, "contact closed over the period")
+
+    # ---- the approach path ------------------------------------------------------------------
+    def first_touch(self):
+        shape = self.prep.shape
+        xp = shape.peak_position
+        kappa = max(-float(shape.profile.curvatures(xp)) / shape.amplitude, 1e-6)
+        a0 = min(np.sqrt(2e-3 / kappa), np.pi / 8)
+        d0 = max(1.0 - float(shape.heights(xp + a0)), 1e-9)
+        return d0, np.array([xp - a0, xp + a0])
+
+    def solve(self, initial, want_fields):
+        t0 = time.perf_counter()
+        p = self.problem
+        target = ({"penetration": p.penetration} if p.penetration is not None
+                  else {"mean_pressure": p.mean_pressure})
+        if initial is not None:
+            edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()
+            out = self.equilibrate(edges, target)
+        else:
+            out = self.approach(target)
+        return self.assemble(out, target, want_fields, time.perf_counter() - t0)
+
+    def approach(self, target):
+        d0, edges = self.first_touch()
+        out = self.equilibrate(edges, {"penetration": d0})
+        if out[0] not in ("converged",):
+            if out[0] == "full_contact" or "penetration" in target and out[0] == "no_contact":
+                return self.equilibrate(out[1], target) if out[0] != "full_contact" else out
+            return out
+        state = out
+        d_prev = d0
+        if "penetration" in target:
+            d_end = target["penetration"]
+        else:
+            d_end = None
+        step = self.disc.path_step
+        while True:
+            fields = state[2]
+            if d_end is None and fields.mean_pressure >= target["mean_pressure"]:
+                final = self.equilibrate(state[1], target)
+                if final[0] == "not_converged":
+                    jump = self.snap(state[1], target)
+                    if jump is not None:
+                        self.events.append("contact jumped at the target load")
+                        return jump
+                return final
+            if d_end is not None and abs(d_end - d_prev) <= 1e-15:
+                return state
+            if d_end is None:
+                d_next = d_prev + step
+            else:
+                d_next = d_prev + np.clip(d_end - d_prev, -step, step)
+            trial = self.equilibrate(state[1], {"penetration": d_next})
+            if trial[0] == "converged":
+                state, d_prev = trial, d_next
+                step = min(step * 1.5, self.disc.path_step)
+                continue
+            if trial[0] == "full_contact":
+                return trial
+            if step < 1e-4:
+                # the branch ends (a fold): the contact jumps; look for the state it lands on
+                jump = self.snap(state[1], {"penetration": d_next})
+                if jump is None:
+                    return trial
+                if jump[0] == "full_contact":
+                    return jump
+                self.events.append(f"contact jumped at penetration {d_next:.6g}")
+                state, d_prev = jump, d_next
+                step = self.disc.path_step
+                continue
+            step *= 0.5
+            self.events.append(f"approach step halved to {step:.3g}")
+
+    def snap(self, edges, control):
+        """Equilibrium reached by an unstable growth of the contacts (or None)."""
+        for factor in (0.5, 1.0, 2.0):
+            out = self.equilibrate(expanded(edges, factor), control)
+            if out[0] in ("converged", "full_contact"):
+                return out
+        return None
+
+    # ---- the result -------------------------------------------------------------------------
+    def assemble(self, out, target, want_fields, elapsed):
+        kind, edges, fields, ctx, resid, message = out
+        p = self.problem
+        sqrt_m2 = np.sqrt(self.prep.m2) if self.prep.m2 > 0 else np.nan
+        adh = p.adhesion
+        dx = float(getattr(adh, "edge_perturbation", 0.0))
+        extras = {"events": list(self.events), "residual_history": list(self.history),
+                  "seconds": elapsed}
+        common = dict(iterations=self.iterations, function_evaluations=self.evaluations,
+                      zeta=p.zeta, edge_perturbation=dx, extras=extras)
+        if kind in ("converged", "not_converged") and fields is not None:
+            mesh = fields.mesh
+            area = float(np.sum(mesh.width))
+            pm = fields.mean_pressure
+            mu = friction(mesh, fields.sigma, self.prep.shape, pm)
+            terms = adh.edge_terms(ctx) if kind == "converged" else None
+            xs, gap = self.gap_outside(fields)
+            fld = self.fields_on_grid(fields) if want_fields else None
+            return ContactResult(
+                area=area, mean_pressure=pm, penetration=fields.penetration, friction=mu,
+                reduced_friction=mu / sqrt_m2, n_contacts=mesh.n_contacts,
+                edges=mesh.edges.reshape(-1, 2).copy(), full_contact=False,
+                converged=kind == "converged",
+                status=SolveStatus.CONVERGED if kind == "converged" else SolveStatus.NOT_CONVERGED,
+                message=message, residual=resid, min_gap=float(gap.min()) if gap.size else np.inf,
+                edge_terms=terms, fields=fld, **common)
+        if kind == "full_contact":
+            return self.full_contact_result(target, message, want_fields, common)
+        if kind == "no_contact":
+            pen = target.get("penetration", np.nan)
+            return ContactResult(area=0.0, mean_pressure=0.0, penetration=pen, friction=np.nan,
+                                 reduced_friction=np.nan, n_contacts=0, edges=np.zeros((0, 2)),
+                                 full_contact=False, converged=True, status=SolveStatus.NO_CONTACT,
+                                 message=message, residual=0.0, min_gap=np.inf, **common)
+        return ContactResult(area=np.nan, mean_pressure=np.nan, penetration=np.nan, friction=np.nan,
+                             reduced_friction=np.nan, n_contacts=0, edges=np.zeros((0, 2)),
+                             full_contact=False, converged=False, status=SolveStatus.FAILED,
+                             message=message, residual=np.inf, min_gap=np.nan, **common)
+
+    def fields_on_grid(self, fields):
+        x = self.grid()
+        mesh = fields.mesh
+        u = displacement(self.prep.kernel, mesh, fields.sigma, x)
+        pres = np.zeros_like(x)
+        for shift in (-TWO_PI, 0.0, TWO_PI):
+            idx = np.searchsorted(mesh.right, x + shift)
+            ok = idx < len(mesh.right)
+            idx = np.minimum(idx, len(mesh.right) - 1)
+            inside = ok & (x + shift >= mesh.left[idx])
+            pres = np.where(inside, -fields.sigma[idx], pres)
+        w = self.prep.shape.heights(x) - 1.0 + fields.penetration
+        return {"x": x, "pressure": pres, "displacement": u, "gap": u - w}
+
+    def full_contact_result(self, target, message, want_fields, common):
+        """Closed contact: ``u = w`` everywhere; stresses from the Fourier multiplier."""
+        shape = self.prep.shape
+        n = max(self.disc.check_points, 1024)
+        x = self.origin + TWO_PI * np.arange(n) / n
+        r = shape.heights(x)
+        rh = np.fft.rfft(r) / n                      # r̃ = Σ rh_m e^{imx} + c.c.
+        m = np.arange(len(rh), dtype=float)
+        mult = np.ones_like(rh)
+        mult[1:] = self.prep.kernel.multiplier(m[1:])
+        sig_h = np.zeros_like(rh)
+        sig_h[1:] = -m[1:] * rh[1:] / mult[1:]       # û_m = -(S_m K_m/m) σ̂_m
+        c0 = self.prep.kernel.mean
+        if "mean_pressure" in target:
+            pm = target["mean_pressure"]
+            pen = 1.0 - rh[0].real + 2 * np.pi * c0 * (-pm)
+        else:
+            pen = target["penetration"]
+            if c0 == 0.0:
+                if abs(pen - (1.0 - rh[0].real)) > 1e-9:
+                    return ContactResult(
+                        area=2 * np.pi, mean_pressure=np.nan, penetration=pen, friction=np.nan,
+                        reduced_friction=np.nan, n_contacts=1, edges=np.zeros((0, 2)),
+                        full_contact=True, converged=False, status=SolveStatus.FAILED,
+                        message="full contact on an incompressible solid fixes the penetration "
+                                f"at {1.0 - rh[0].real:.6g}; a larger one cannot be imposed",
+                        residual=np.inf, min_gap=0.0, **common)
+                pm = np.nan
+            else:
+                pm = -(pen - 1.0 + rh[0].real) / (2 * np.pi * c0)
+        sig_h[0] = -pm
+        sigma = np.fft.irfft(sig_h * n, n)
+        slopes = shape.profile.slopes(x)
+        mu = float(np.mean(sigma * slopes) / pm) if pm else np.nan
+        sqrt_m2 = np.sqrt(self.prep.m2)
+        adhesive = self.problem.adhesion.work_of_adhesion > 0
+        ok = adhesive or bool(np.all(sigma <= 1e-9))
+        fld = ({"x": x, "pressure": -sigma, "displacement": r - 1.0 + pen,
+                "gap": np.zeros_like(x)} if want_fields else None)
+        return ContactResult(
+            area=2 * np.pi, mean_pressure=float(pm), penetration=float(pen), friction=mu,
+            reduced_friction=mu / sqrt_m2, n_contacts=1, edges=np.zeros((0, 2)), full_contact=True,
+            converged=ok, status=SolveStatus.CONVERGED if ok else SolveStatus.FAILED,
+            message=message if ok else "full contact would carry tension without adhesion",
+            residual=0.0, min_gap=0.0, fields=fld, **common)
+
+
+def solve(scene, **options) -> ContactResult:
+    """Solve a :class:`~viscocontact.scene.Scene` (``options`` go to :class:`ContactProblem`)."""
+    return ContactProblem.from_scene(scene, **options).solve()

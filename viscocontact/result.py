@@ -1,0 +1,110 @@
+"""The result of one contact solve: a fixed schema, an enum status, a message, extras."""
+from __future__ import annotations
+
+import enum
+import json
+from typing import Any
+
+import attrs
+import numpy as np
+
+
+class SolveStatus(enum.Enum):
+    """Outcome of a solve."""
+
+    CONVERGED = "converged"
+    NOT_CONVERGED = "not_converged"
+    NO_CONTACT = "no_contact"
+    FAILED = "failed"
+
+
+@attrs.frozen(kw_only=True)
+class ContactResult:
+    """Equilibrium of one scene (dimensionless, eq. 4.17).
+
+    Attributes
+    ----------
+    area : float
+        ``Ã = q0·(total contact length per period)``; 2π in full contact.
+    mean_pressure, penetration : float
+        ``p̃∞`` and ``Δ̃``.
+    friction : float
+        Viscoelastic friction coefficient μ (eq. 4.16), positive when it opposes sliding.
+    reduced_friction : float
+        ``μ/√m2`` (eq. 4.59).
+    n_contacts : int
+    edges : ndarray, shape (n_contacts, 2)
+        ``[X̃_start, X̃_end]`` of each contact (empty in full contact).
+    full_contact : bool
+    converged : bool
+    status : SolveStatus
+    message : str
+    residual : float
+        Largest edge residual (stress-intensity units).
+    iterations, function_evaluations : int
+        Totals over the whole solve (all load steps and topology restarts).
+    zeta, edge_perturbation : float
+        ``ζ`` and the ``q0·δX`` of the adhesion model (0 without adhesion or in the limit).
+    min_gap : float
+        Smallest gap between solid and profile outside the contacts on the check grid (>= 0 means
+        no interpenetration).
+    edge_terms : EdgeTerms or None
+        Per-edge ``δŨ/δX̃``, ``δL̃_P/δX̃``, effective work of adhesion, ``K̃`` (on request).
+    fields : dict or None
+        ``x``, ``pressure``, ``displacement``, ``gap`` arrays (on request).
+    extras : dict
+        Solver diagnostics (residual history, timings, topology events).
+    """
+
+    area: float
+    mean_pressure: float
+    penetration: float
+    friction: float
+    reduced_friction: float
+    n_contacts: int
+    edges: np.ndarray
+    full_contact: bool
+    converged: bool
+    status: SolveStatus
+    message: str
+    residual: float
+    iterations: int
+    function_evaluations: int
+    zeta: float
+    edge_perturbation: float
+    min_gap: float
+    edge_terms: Any = None
+    fields: Any = None
+    extras: dict = attrs.field(factory=dict)
+
+    def to_dict(self, *, with_fields: bool = False) -> dict:
+        """JSON-ready dictionary (the keys of ``viscocontact solve --json``)."""
+        out = {
+            "area": self.area, "mean_pressure": self.mean_pressure,
+            "penetration": self.penetration, "friction": self.friction,
+            "reduced_friction": self.reduced_friction, "n_contacts": self.n_contacts,
+            "edges": [[float(a), float(b)] for a, b in np.asarray(self.edges).reshape(-1, 2)],
+            "full_contact": self.full_contact, "converged": self.converged,
+            "status": self.status.value, "message": self.message, "residual": self.residual,
+            "iterations": self.iterations, "function_evaluations": self.function_evaluations,
+            "zeta": self.zeta, "edge_perturbation": self.edge_perturbation,
+            "min_gap": self.min_gap,
+        }
+        if self.edge_terms is not None:
+            t = self.edge_terms
+            out["edge_terms"] = {
+                "stored": t.stored.tolist(), "nonconservative": t.nonconservative.tolist(),
+                "target": t.target, "effective_work": [None if np.isnan(v) else float(v)
+                                                       for v in t.effective_work],
+                "stress_intensity": t.stress_intensity.tolist(),
+                "edge_perturbation": t.edge_perturbation}
+        if with_fields and self.fields is not None:
+            out["fields"] = {k: np.asarray(v).tolist() for k, v in self.fields.items()}
+        return out
+
+    def to_json(self, **kw) -> str:
+        def default(o):
+            if isinstance(o, (np.floating, np.integer)):
+                return o.item()
+            raise TypeError(type(o))
+        return json.dumps(self.to_dict(**kw), default=default, allow_nan=True)
