@@ -85,6 +85,59 @@ def _run_plugins(args: argparse.Namespace) -> int:
     return 0
 
 
+# ---- solve --------------------------------------------------------------------------------------
+def _configure_solve(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("scene", metavar="SCENE.toml", help="scene file")
+    parser.add_argument("--json", action="store_true", help="print the result as JSON")
+    parser.add_argument("--fields", action="store_true",
+                        help="include pressure, displacement and gap on the check grid")
+    parser.add_argument("--elements", type=int, default=None, help="elements per contact")
+
+
+def _run_solve(args: argparse.Namespace) -> int:
+    """Solve one scene; exit status 1 when the solve does not converge."""
+    from .problem import ContactProblem, Discretization
+    from .scene import Scene
+
+    scene = Scene.from_toml(_path(args.scene))
+    options = {}
+    if args.elements is not None:
+        options["discretization"] = Discretization(elements=args.elements)
+    result = ContactProblem.from_scene(scene, **options).solve(fields=args.fields)
+    if args.json:
+        print(result.to_json(with_fields=args.fields))
+    else:
+        for key, value in result.to_dict().items():
+            if key != "edge_terms":
+                print(f"{key:<18} {_format_value(value)}")
+    if not result.converged:
+        print(f"viscocontact solve: not converged: {result.message}", file=sys.stderr)
+        return 1
+    return 0
+
+
+# ---- study --------------------------------------------------------------------------------------
+def _configure_study(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--out", default=".", help="folder for study.h5 and the PNG plots")
+
+
+def _run_study(args: argparse.Namespace) -> int:
+    """Run the default study (wavy contact, area and friction against ζ) and plot it."""
+    from pathlib import Path
+
+    from .study import WavyStudy, plot, write_h5
+
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    study = WavyStudy()
+    results = study.run()
+    write_h5(out / "study.h5", study, results)
+    for f in [out / "study.h5", *plot(out, results)]:
+        print(f"wrote {f}")
+    ok = all(results[k]["converged"].all() for k in ("adhesive", "adhesionless"))
+    return 0 if ok else 1
+
+
 # ---- the parser ---------------------------------------------------------------------------------
 Configure = Callable[[argparse.ArgumentParser], None]
 Run = Callable[[argparse.Namespace], int]
@@ -94,6 +147,8 @@ Run = Callable[[argparse.Namespace], int]
 SUBCOMMANDS: dict[str, tuple[Configure, Run]] = {
     "describe": (_configure_describe, _run_describe),
     "plugins": (_configure_plugins, _run_plugins),
+    "solve": (_configure_solve, _run_solve),
+    "study": (_configure_study, _run_study),
 }
 
 

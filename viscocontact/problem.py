@@ -337,9 +337,13 @@ class _Run:
     def approach(self, target):
         d0, edges = self.first_touch()
         out = self.equilibrate(edges, {"penetration": d0})
-        if out[0] not in ("converged",):
-            if out[0] == "full_contact" or "penetration" in target and out[0] == "no_contact":
-                return self.equilibrate(out[1], target) if out[0] != "full_contact" else out
+        if out[0] == "not_converged":
+            # adhesion can make the first contact jump to a larger size at once
+            jump = self.snap(edges, {"penetration": d0})
+            if jump is not None:
+                self.events.append("first contact jumped")
+                out = jump
+        if out[0] != "converged":
             return out
         state = out
         d_prev = d0
@@ -371,7 +375,7 @@ class _Run:
                 continue
             if trial[0] == "full_contact":
                 return trial
-            if step < 1e-4:
+            if step < self.disc.path_step / 16:
                 # the branch ends (a fold): the contact jumps; look for the state it lands on
                 jump = self.snap(state[1], {"penetration": d_next})
                 if jump is None:
@@ -387,7 +391,7 @@ class _Run:
 
     def snap(self, edges, control):
         """Equilibrium reached by an unstable growth of the contacts (or None)."""
-        for factor in (0.5, 1.0, 2.0):
+        for factor in (0.5, 1.0, 2.0, 4.0, 8.0):
             out = self.equilibrate(expanded(edges, factor), control)
             if out[0] in ("converged", "full_contact"):
                 return out

@@ -8,7 +8,12 @@ Nothing here knows about a particular method; each solver module holds only its 
 * :class:`CountedResidual` — wraps ``problem.residual``: counts every call, enforces
   ``Tolerances.max_evaluations`` (raising :class:`BudgetExhausted` *before* a call that would
   exceed it) and never catches what ``residual`` raises.
-* :func:`limit_step` — scale a step by one common factor so that ``|Δx_i| <= max_step_i``.
+* :func:`limit_step` — scale a step by one common factor so that ``|Δx_i| <= max_step_i``;
+  :func:`step_bound` — ``max_step(x)`` or inf.
+* :func:`problem_jacobian` — ``problem.jacobian`` when present, else finite differences through
+  the counted residual; :func:`linear_solve` — ``J⁻¹b`` with a least-squares fallback.
+* :func:`result` — the :class:`SolverResult`, with ``converged`` derived from ``max|r| <= tol``
+  only (a loop cannot claim convergence by mistake).
 """
 from __future__ import annotations
 
@@ -17,13 +22,20 @@ from typing import Callable
 import attrs
 import numpy as np
 
-from .._validation import one_of, positive
+from .._validation import _name, one_of, positive
+from ..errors import ValidationError
 from .base import NonlinearProblem, SolverResult, Status, Tolerances, optional
 
-__all__ = ["BudgetExhausted", "CountedResidual", "FiniteDifference", "fd_jacobian",
-           "limit_step", "max_abs", "problem_jacobian"]
+__all__ = ["BudgetExhausted", "CountedResidual", "FiniteDifference", "boolean", "fd_jacobian",
+           "limit_step", "linear_solve", "max_abs", "problem_jacobian", "result", "step_bound"]
 
 DIFFERENCES = ("forward", "central")
+
+
+def boolean(inst, attribute, value):
+    """Validator: exactly True or False (not 0/1 or "yes")."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise ValidationError(_name(inst, attribute), value, "True or False")
 
 
 @attrs.frozen(kw_only=True)
@@ -134,7 +146,8 @@ def max_abs(v: np.ndarray) -> float:
     return float(np.max(np.abs(v)))
 
 
-def limit_step(problem: NonlinearProblem, x: np.ndarray, dx: np.ndarray) -> tuple[np.ndarray, float]:
+def limit_step(problem: NonlinearProblem, x: np.ndarray,
+               dx: np.ndarray) -> tuple[np.ndarray, float]:
     """Scale ``dx`` by one common factor ``t <= 1`` so that ``|t·dx_i| <= max_step(x)_i``.
 
     A common factor keeps the direction (a descent direction stays one). Returns

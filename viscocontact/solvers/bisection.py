@@ -50,6 +50,18 @@ class Bisection(NonlinearSolver):
     * Stops with ``Status.STALLED`` when ``s_i < tolerances.step`` for every unknown that is not
       yet converged. Convergence is linear (one bit per iteration once bracketed) but needs
       neither Jacobian nor merit.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> class Edges:          # r_i decreases with x_i: orientation -1
+    ...     def residual(self, x):
+    ...         return np.array([0.05, 0.12]) - x
+    ...     def orientation(self):
+    ...         return np.array([-1.0, -1.0])
+    >>> res = Bisection(initial_step=0.02).solve(Edges(), np.zeros(2))
+    >>> res.converged, np.round(res.x, 8).tolist()
+    (True, [0.05, 0.12])
     """
 
     initial_step: float = attrs.field(default=1e-2, converter=float, validator=positive)

@@ -5,8 +5,8 @@ import attrs
 import numpy as np
 
 from .._validation import in_range, int_range, one_of, positive
-from ._fd import (DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, limit_step,
-                  max_abs, problem_jacobian, result)
+from ._fd import (DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, boolean,
+                  limit_step, max_abs, problem_jacobian, result)
 from .base import NonlinearProblem, NonlinearSolver, SolverResult, Status, Tolerances
 
 __all__ = ["Broyden", "InverseJacobian"]
@@ -42,7 +42,8 @@ class InverseJacobian:
         when the denominator ``sᵀHy`` is tiny relative to ``|s|·|Hy|``."""
         Hy = self.H @ y
         den = float(s @ Hy)
-        if not np.isfinite(den) or abs(den) <= DENOMINATOR_RTOL * np.linalg.norm(s) * np.linalg.norm(Hy):
+        small = DENOMINATOR_RTOL * np.linalg.norm(s) * np.linalg.norm(Hy)
+        if not np.isfinite(den) or abs(den) <= small:
             return False
         self.H = self.H + np.outer(s - Hy, s @ self.H) / den
         return True
@@ -82,6 +83,16 @@ class Broyden(NonlinearSolver):
     * Cost: the initial Jacobian (0, ``n`` or ``2n`` evaluations) and then one evaluation per
       iteration, plus the Jacobian at each restart (counted in ``extras["restarts"]``).
     * Convergence is superlinear for α = 1 and a good initial Jacobian.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> class P:
+    ...     def residual(self, x):
+    ...         return np.tanh(x - np.array([0.2, -0.4])) + 0.1 * np.sin(x[::-1])
+    >>> res = Broyden(relaxation=0.8).solve(P(), np.zeros(2))
+    >>> res.converged, res.status.value
+    (True, 'converged')
     """
 
     relaxation: float = attrs.field(default=1.0, converter=float,
@@ -89,7 +100,7 @@ class Broyden(NonlinearSolver):
     difference: str = attrs.field(default="forward", validator=one_of(DIFFERENCES))
     rel_step: float = attrs.field(default=1e-7, converter=float, validator=positive)
     typical_scale: float = attrs.field(default=1.0, converter=float, validator=positive)
-    restart: bool = attrs.field(default=True, validator=attrs.validators.instance_of(bool))
+    restart: bool = attrs.field(default=True, validator=boolean)
     restart_after: int = attrs.field(default=2, validator=int_range(1))
     max_halvings: int = attrs.field(default=10, validator=int_range(0, 60))
 

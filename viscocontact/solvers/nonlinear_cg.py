@@ -100,6 +100,15 @@ class _Objective:
         self.weights /= float(np.max(self.weights))
 
 
+def _largest_step(bound: np.ndarray, d: np.ndarray) -> float:
+    """Largest α with ``|α·d_i| <= bound_i`` for all i (inf when nothing bounds it)."""
+    active = (d != 0) & np.isfinite(bound)
+    if not np.any(active):
+        return float("inf") if np.any(d != 0) else 0.0
+    with np.errstate(over="ignore"):
+        return float(np.min(bound[active] / np.abs(d[active])))
+
+
 @attrs.frozen(kw_only=True)
 class NonlinearCG(NonlinearSolver):
     """Nonlinear conjugate gradients minimising a merit function whose minimum is the root.
@@ -155,12 +164,22 @@ class NonlinearCG(NonlinearSolver):
     * Converged means ``max|r| <= tolerances.residual``, never a small gradient; a stationary
       point of the merit that is not a root ends with ``Status.STALLED``. For a non-singular J
       the only stationary points of ``0.5|r|²`` are roots, whether J is symmetric or not.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> class P:
+    ...     def residual(self, x):
+    ...         return np.array([[3.0, 1.0], [-1.0, 2.0]]) @ x - np.array([1.0, 2.0])
+    >>> res = NonlinearCG().solve(P(), np.zeros(2))
+    >>> res.converged, np.round(res.x, 8).tolist()
+    (True, [0.0, 1.0])
     """
 
     beta: str = attrs.field(default="polak-ribiere", validator=one_of(BETAS))
     line_search: str = attrs.field(default="armijo", validator=one_of(LINE_SEARCHES))
     gradient: str = attrs.field(default="least-squares", validator=one_of(GRADIENTS))
-    weighting: str = attrs.field(default="diagonal", validator=one_of(WEIGHTINGS))
+    weighting: str = attrs.field(default="none", validator=one_of(WEIGHTINGS))
     preconditioner: str = attrs.field(default="jacobi", validator=one_of(PRECONDITIONERS))
     restart_every: int = attrs.field(default=0, validator=int_range(0))
     armijo: float = attrs.field(default=1e-4, converter=float,
@@ -301,13 +320,12 @@ class NonlinearCG(NonlinearSolver):
                     d = -z + self._beta(g, z, g_old, z_old) * d
                     steepest = not float(g @ d) < 0.0
                 bound = step_bound(problem, p.x)
-                for attempt in ("conjugate", "steepest"):
+                for _attempt in ("conjugate", "steepest"):
                     if steepest:
                         d = -z
                         since_restart = 0
                         restarts += 1
-                    nz = d != 0
-                    alpha_max = float(np.min(bound[nz] / np.abs(d[nz]))) if np.any(nz) else 0.0
+                    alpha_max = _largest_step(bound, d)
                     slope = float(g @ d)
                     q, alpha = self._line_search(
                         obj, p, d, slope,

@@ -137,6 +137,17 @@ def test_interconversion_with_moduli_over_twelve_decades():
     np.testing.assert_allclose(back.times, p.times, rtol=1e-12)
 
 
+def test_from_creep_accepts_any_order_and_matches_the_sls():
+    """SLS with E0 = 1, β = 10, creep time 2: J0 = 0.1, c = 0.9, θ = 2 -> E1 = 9, τ1 = 0.2."""
+    p = PronySeries.from_creep(0.1, [0.9], [2.0], reference_time=2.0)
+    assert p.relaxed_modulus == pytest.approx(1.0, rel=1e-14)
+    np.testing.assert_allclose(p.moduli, [9.0], rtol=1e-13)
+    np.testing.assert_allclose(p.times, [0.2], rtol=1e-13)
+    a = PronySeries.from_creep(0.5, [0.1, 2.0, 0.3], [10.0, 0.01, 1.0])
+    b = PronySeries.from_creep(0.5, [2.0, 0.3, 0.1], [0.01, 1.0, 10.0])
+    assert a == b
+
+
 def test_zero_moduli_and_repeated_times_are_merged_in_the_creep_form():
     p = PronySeries(relaxed_modulus=1.0, moduli=[2.0, 0.0, 3.0, 4.0], times=[0.1, 1.0, 5.0, 0.1])
     q = PronySeries(relaxed_modulus=1.0, moduli=[6.0, 3.0], times=[0.1, 5.0])
