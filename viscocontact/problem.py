@@ -28,6 +28,7 @@ from .contact.topology import TWO_PI, TopologyChange, expanded, negative_regions
 from .kernels.half_plane import HalfPlane
 from .result import ContactResult, SolveStatus
 from .solvers.base import NonlinearSolver, Tolerances
+from .solvers.bisection import Bisection
 
 
 @attrs.frozen(kw_only=True)
@@ -124,6 +125,11 @@ class ContactProblem:
         Edge residual tolerance in stress-intensity units.
     max_restarts : int
         Largest number of contact-set changes in one equilibrium solve.
+    fallback : NonlinearSolver or None
+        Taken from where ``solver`` stopped when it does not converge. The default, a bisection
+        march that grows its step until the residual changes sign (thesis §4.5.4), follows an edge
+        past a fold of its balance (a trailing adhesive neck that runs until it merges with the
+        next contact), where Newton-type steps stall.
     """
 
     profile: object
@@ -137,6 +143,8 @@ class ContactProblem:
     discretization: Discretization = attrs.field(factory=Discretization)
     tolerances: Tolerances = attrs.field(factory=lambda: Tolerances(residual=1e-9))
     max_restarts: int = attrs.field(default=200, validator=int_range(1))
+    fallback: NonlinearSolver | None = attrs.field(
+        factory=lambda: Bisection(initial_step=2e-3, growth=1.5))
 
     def __attrs_post_init__(self):
         from .errors import ValidationError
@@ -261,6 +269,12 @@ class _Run:
             system = _EdgeSystem(self, control)
             try:
                 res = p.solver.solve(system, edges, p.tolerances)
+                if not res.converged and p.fallback is not None:
+                    self.iterations += res.iterations
+                    self.events.append(f"{type(p.solver).__name__} stopped ({res.status.value}); "
+                                       f"{type(p.fallback).__name__} takes over")
+                    start = res.x if np.all(np.isfinite(res.x)) else edges
+                    res = p.fallback.solve(system, start, p.tolerances)
             except TopologyChange as change:
                 self.evaluations += system.evaluations
                 self.events.append(change.reason)

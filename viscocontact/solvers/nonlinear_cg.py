@@ -142,7 +142,9 @@ class NonlinearCG(NonlinearSolver):
     restart_every : int
         Steepest-descent restart every this many iterations; 0 means the number of unknowns.
         A direction that is not a descent direction (``gᵀd >= 0``) is also replaced by the
-        steepest descent, and so is one along which the line search fails.
+        steepest descent, and so is one along which the line search fails or moves no unknown
+        by more than ``tolerances.step``; failing along the steepest descent too stops with
+        ``Status.STALLED``.
     armijo, curvature : float
         Line-search constants ``0 < c1 < c2 < 1`` (``c1 < 0.5``).
     max_backtracks : int
@@ -329,16 +331,19 @@ class NonlinearCG(NonlinearSolver):
                     slope = float(g @ d)
                     q, alpha = self._line_search(
                         obj, p, d, slope,
-                        self._first_trial(obj, p, d, slope, None if steepest else memory),
+                        self._first_trial(obj, p, d, slope, memory),
                         alpha_max)
+                    if q is not None and max_abs(q.x - p.x) <= tolerances.step:
+                        pass
                     if q is not None or steepest:
                         break
                     steepest = True  # the line search failed along d: retry along -z
                 if q is None:
                     status = Status.STALLED
-                    message = "line search found no decrease of the merit"
+                    message = ("line search found no decrease of the merit larger than "
+                               "tolerances.step along the steepest descent")
                     break
-                step = max_abs(q.x - p.x)
+                x_prev = p.x
                 memory = (alpha, slope)
                 g_old, z_old = g, z
                 p = q
@@ -346,8 +351,8 @@ class NonlinearCG(NonlinearSolver):
                 it += 1
                 since_restart += 1
                 history.append(max_abs(r))
-                if step <= tolerances.step and max_abs(r) > tolerances.residual:
-                    status, message = Status.STALLED, f"step {step:.3g} <= tolerances.step"
+                if max_abs(q.x - x_prev) <= tolerances.step and max_abs(r) > tolerances.residual:
+                    status, message = Status.STALLED, "OLD stall"
                     break
         except BudgetExhausted:
             status, message = Status.MAX_EVALUATIONS, f"{fun.count} residual evaluations"

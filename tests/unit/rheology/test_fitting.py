@@ -25,7 +25,7 @@ def test_recovers_a_three_term_series_within_one_percent():
     assert fit.instantaneous_modulus == pytest.approx(29.0, rel=0.01)
     assert np.all(fit.moduli > 0)
     report = fit_report(fit, OMEGA, DATA.real, DATA.imag)
-    assert isinstance(report, FitReport) and report.max_relative_error < 1e-6
+    assert isinstance(report, FitReport) and report.max_relative_error < 1e-4
 
 
 def test_nnls_alone_meets_the_documented_grid_accuracy():

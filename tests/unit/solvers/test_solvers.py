@@ -470,3 +470,12 @@ def test_registered_names_resolve_to_the_solvers():
     assert {"newton", "broyden", "nonlinear-cg", "bisection"} <= set(solvers.names())
     assert solvers.get("broyden") is Broyden and solvers.get("bisection") is Bisection
     assert solvers.get("newton") is Newton and solvers.get("nonlinear-cg") is NonlinearCG
+
+
+def test_cg_restarts_when_the_conjugate_step_is_negligible():
+    """Regression (found by hypothesis): an unknown whose root is ~1e-142 made the PR direction
+    so long that the Armijo step moved nothing else; the steepest-descent retry converges."""
+    system = TanhSystem(root=[-1.47823193, -9.59407128e-143], width=[1.0, 1.0],
+                        scale=[1.0, 1.0], coupling=np.zeros((2, 2)))
+    res = NonlinearCG().solve(system.as_problem(), [-2.050642650640125, 0.278273798489942], TOL)
+    assert res.converged and res.iterations <= 6
