@@ -208,3 +208,17 @@ class _Active(_BadCreep):
 def test_check_rheology_catches(rheology, message):
     with pytest.raises(AssertionError, match=message):
         check_rheology(rheology, registered=False)
+
+
+def test_solve_with_the_plugin_profile_through_the_scene():
+    """The plugin's profile, named only in a scene file, solves with no change to the core."""
+    from viscocontact.problem import solve
+
+    scene = Scene.from_toml(SCENE.replace('kind = "energy-balance"\ngamma = 1e-5', 'kind = "none"'))
+    assert type(scene.profile).__name__ == "TwoScaleProfile" and not scene.adhesive
+    result = solve(scene)
+    assert result.converged, result.message
+    assert result.mean_pressure == pytest.approx(0.3, rel=1e-10)
+    assert 0 < result.area < 2 * np.pi
+    assert result.min_gap >= 0.0
+    assert result.friction > 0          # viscoelastic dissipation at ζ = 0.01

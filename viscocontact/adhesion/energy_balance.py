@@ -36,12 +36,12 @@ class EnergyBalance(AdhesionModel):
     Parameters
     ----------
     gamma : float
-        γ̃ = (1-ν²) q0 Δγ/(π E0) >= 0 (eq. 4.17).
+        γ̃ = (1-ν²) q0 Δγ/(π E0), finite and >= 0 (eq. 4.17).
     edge_perturbation : float
         Virtual edge advance ``q0·δX`` in ``[0, 0.1]``; 0 is the closed-form limit δX → 0.
     """
 
-    gamma: float = attrs.field(validator=in_range(0.0, 1.0))
+    gamma: float = attrs.field(validator=in_range(0.0))
     edge_perturbation: float = attrs.field(default=DEFAULT_EDGE_PERTURBATION,
                                            validator=in_range(0.0, 0.1))
 

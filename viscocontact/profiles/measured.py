@@ -78,9 +78,9 @@ class MeasuredProfile(SpectralProfile):
     """
 
     amplitudes: np.ndarray = attrs.field(converter=_read_only, validator=_check_coefficients,
-                                         eq=array_eq())
+                                         eq=array_eq(), hash=False)
     phases: np.ndarray = attrs.field(converter=_read_only, validator=_check_coefficients,
-                                     eq=array_eq())
+                                     eq=array_eq(), hash=False)
     length: float = attrs.field(converter=as_float, validator=positive)
 
     @property

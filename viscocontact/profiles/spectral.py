@@ -95,10 +95,10 @@ class Modes:
     """
 
     wavenumbers: np.ndarray = attrs.field(converter=_int_array, validator=_check_modes,
-                                          eq=array_eq())
+                                          eq=array_eq(), hash=False)
     amplitudes: np.ndarray = attrs.field(converter=_float_array, validator=_check_modes,
-                                         eq=array_eq())
-    phases: np.ndarray = attrs.field(converter=_float_array, validator=_check_modes, eq=array_eq())
+                                         eq=array_eq(), hash=False)
+    phases: np.ndarray = attrs.field(converter=_float_array, validator=_check_modes, eq=array_eq(), hash=False)
 
     @property
     def coefficients(self) -> np.ndarray:

@@ -334,7 +334,7 @@ class NonlinearCG(NonlinearSolver):
                         self._first_trial(obj, p, d, slope, memory),
                         alpha_max)
                     if q is not None and max_abs(q.x - p.x) <= tolerances.step:
-                        pass
+                        q = None  # a negligible step is no progress either
                     if q is not None or steepest:
                         break
                     steepest = True  # the line search failed along d: retry along -z
@@ -343,7 +343,6 @@ class NonlinearCG(NonlinearSolver):
                     message = ("line search found no decrease of the merit larger than "
                                "tolerances.step along the steepest descent")
                     break
-                x_prev = p.x
                 memory = (alpha, slope)
                 g_old, z_old = g, z
                 p = q
@@ -351,9 +350,6 @@ class NonlinearCG(NonlinearSolver):
                 it += 1
                 since_restart += 1
                 history.append(max_abs(r))
-                if max_abs(q.x - x_prev) <= tolerances.step and max_abs(r) > tolerances.residual:
-                    status, message = Status.STALLED, "OLD stall"
-                    break
         except BudgetExhausted:
             status, message = Status.MAX_EVALUATIONS, f"{fun.count} residual evaluations"
         return result(x, r, tolerances, status, message, it, fun.count, history,
