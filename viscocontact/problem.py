@@ -79,6 +79,7 @@ class _EdgeSystem:
         key = x.tobytes()
         if key in self.cache:
             return self.cache[key]
+        self.last_valid = getattr(self, "last_valid", None)
         o = self.owner
         if not np.all(np.isfinite(x)):
             return None, None, np.full(len(x), np.inf)
@@ -92,6 +93,7 @@ class _EdgeSystem:
         r = o.problem.adhesion.residuals(ctx)
         self.evaluations += 1
         self.cache = {key: (fields, ctx, r)}
+        self.last_valid = x.copy()
         return fields, ctx, r
 
     def residual(self, x):
@@ -268,7 +270,11 @@ class _Run:
             self.n_edges = len(edges)
             system = _EdgeSystem(self, control)
             try:
-                res = p.solver.solve(system, edges, p.tolerances)
+                if getattr(self, "_no_primary", False) and p.fallback is not None:
+                    self._no_primary = False
+                    res = p.fallback.solve(system, edges, p.tolerances)
+                else:
+                    res = p.solver.solve(system, edges, p.tolerances)
                 if not res.converged and p.fallback is not None:
                     self.iterations += res.iterations
                     self.events.append(f"{type(p.solver).__name__} stopped ({res.status.value}); "
@@ -279,7 +285,15 @@ class _Run:
                 self.evaluations += system.evaluations
                 self.events.append(change.reason)
                 if change.full_contact:
-                    return self.full_contact(control)
+                    # accept closure only if a small-step march closes the contact too (a Newton
+                    # trial step may overshoot across the period)
+                    start = getattr(system, "last_valid", None)
+                    if start is None or p.fallback is None or self._closes(start, control):
+                        return self.full_contact(control)
+                    self.events.append("closure rejected: a step overshot the period")
+                    edges = start
+                    self._no_primary = True
+                    continue
                 edges = change.edges
                 continue
             self.evaluations += system.evaluations
@@ -309,6 +323,18 @@ class _Run:
             return ("converged", x, fields, ctx, float(np.max(np.abs(r))), "converged")
         return ("not_converged", edges, None, None, np.inf,
                 f"contact set still changing after {p.max_restarts} restarts")
+
+    def _closes(self, edges, control) -> bool:
+        """Whether the bisection march from ``edges`` closes the contact over the period."""
+        system = _EdgeSystem(self, control)
+        self.n_edges = len(edges)
+        try:
+            res = self.problem.fallback.solve(system, edges, self.problem.tolerances)
+        except TopologyChange as change:
+            self.evaluations += system.evaluations
+            return change.full_contact
+        self.evaluations += system.evaluations
+        return False
 
     def births_without_contact(self, control):
         if "penetration" not in control:
@@ -388,6 +414,8 @@ class _Run:
                 step = min(step * 1.5, self.disc.path_step)
                 continue
             if trial[0] == "full_contact":
+                if d_end is None and not self.closure_supports(target["mean_pressure"]):
+                    return self.equilibrate(state[1], target)   # finish in load control
                 return trial
             if step < self.disc.path_step / 16:
                 # the branch ends (a fold): the contact jumps; look for the state it lands on
@@ -465,18 +493,28 @@ class _Run:
         w = self.prep.shape.heights(x) - 1.0 + fields.penetration
         return {"x": x, "pressure": pres, "displacement": u, "gap": u - w}
 
-    def full_contact_result(self, target, message, want_fields, common):
-        """Closed contact: ``u = w`` everywhere; stresses from the Fourier multiplier."""
+    def closed_stress(self):
+        """Full contact: grid ``x``, profile spectrum and the zero-mean stress ``σ̃_osc``."""
         shape = self.prep.shape
         n = max(self.disc.check_points, 1024)
         x = self.origin + TWO_PI * np.arange(n) / n
-        r = shape.heights(x)
-        rh = np.fft.rfft(r) / n                      # r̃ = Σ rh_m e^{imx} + c.c.
+        rh = np.fft.rfft(shape.heights(x)) / n       # r̃ = Σ rh_m e^{imx} + c.c.
         m = np.arange(len(rh), dtype=float)
-        mult = np.ones_like(rh)
-        mult[1:] = self.prep.kernel.multiplier(m[1:])
         sig_h = np.zeros_like(rh)
-        sig_h[1:] = -m[1:] * rh[1:] / mult[1:]       # û_m = -(S_m K_m/m) σ̂_m
+        sig_h[1:] = -m[1:] * rh[1:] / self.prep.kernel.multiplier(m[1:])   # û = -(S K/m) σ̂
+        return x, rh, sig_h, np.fft.irfft(sig_h * n, n)
+
+    def closure_supports(self, mean_pressure: float) -> bool:
+        """Whether full contact carries ``mean_pressure`` without tension (always with adhesion)."""
+        if self.problem.adhesion.work_of_adhesion > 0:
+            return True
+        return mean_pressure >= float(np.max(self.closed_stress()[3]))
+
+    def full_contact_result(self, target, message, want_fields, common):
+        """Closed contact: ``u = w`` everywhere; stresses from the Fourier multiplier."""
+        shape = self.prep.shape
+        x, rh, sig_h, _ = self.closed_stress()
+        n = len(x)
         c0 = self.prep.kernel.mean
         if "mean_pressure" in target:
             pm = target["mean_pressure"]
@@ -495,8 +533,10 @@ class _Run:
                 pm = np.nan
             else:
                 pm = -(pen - 1.0 + rh[0].real) / (2 * np.pi * c0)
+        sig_h = sig_h.copy()
         sig_h[0] = -pm
         sigma = np.fft.irfft(sig_h * n, n)
+        r = shape.heights(x)
         slopes = shape.profile.slopes(x)
         mu = float(np.mean(sigma * slopes) / pm) if pm else np.nan
         sqrt_m2 = np.sqrt(self.prep.m2)
