@@ -208,3 +208,15 @@ def result(x: np.ndarray, r: np.ndarray, tolerances: Tolerances, status: Status,
                         converged=converged, status=status, message=message,
                         iterations=iterations, function_evaluations=evaluations,
                         residual_history=tuple(float(h) for h in history), extras=dict(extras))
+
+
+def first_residual(fun: "CountedResidual", x: np.ndarray, tolerances: Tolerances,
+                   history: list) -> tuple[np.ndarray, "SolverResult | None"]:
+    """Evaluate the residual at the starting point, record it, and return ``(r, early)``; ``early``
+    is the failed result every solver returns when that residual is not finite."""
+    r = fun(x)
+    history.append(max_abs(r))
+    if not np.all(np.isfinite(r)):
+        return r, result(x, r, tolerances, Status.FAILED, "residual at x0 is not finite",
+                         0, fun.count, history)
+    return r, None

@@ -5,7 +5,8 @@ import attrs
 import numpy as np
 
 from .._validation import in_range, int_range, positive
-from ._fd import BudgetExhausted, CountedResidual, max_abs, result, step_bound
+from ._fd import (BudgetExhausted, CountedResidual, first_residual, max_abs, result,
+                  step_bound)
 from .base import NonlinearProblem, NonlinearSolver, SolverResult, Status, Tolerances, optional
 
 __all__ = ["Bisection"]
@@ -88,11 +89,9 @@ class Bisection(NonlinearSolver):
         status, message = Status.FAILED, ""
         tol = tolerances.residual
         try:
-            r = fun(x)
-            history.append(max_abs(r))
-            if not np.all(np.isfinite(r)):
-                return result(x, r, tolerances, Status.FAILED, "residual at x0 is not finite",
-                              0, fun.count, history)
+            r, early = first_residual(fun, x, tolerances, history)
+            if early is not None:
+                return early
             while True:
                 if max_abs(r) <= tol:
                     status = Status.CONVERGED

@@ -6,7 +6,7 @@ import numpy as np
 
 from .._validation import in_range, int_range, one_of, positive
 from ._fd import (DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, boolean,
-                  limit_step, max_abs, problem_jacobian, result)
+                  first_residual, limit_step, max_abs, problem_jacobian, result)
 from .base import NonlinearProblem, NonlinearSolver, SolverResult, Status, Tolerances
 
 __all__ = ["Broyden", "InverseJacobian"]
@@ -118,11 +118,9 @@ class Broyden(NonlinearSolver):
         it = restarts = skipped = 0
         status, message = Status.FAILED, ""
         try:
-            r = fun(x)
-            history.append(max_abs(r))
-            if not np.all(np.isfinite(r)):
-                return result(x, r, tolerances, Status.FAILED, "residual at x0 is not finite",
-                              0, fun.count, history)
+            r, early = first_residual(fun, x, tolerances, history)
+            if early is not None:
+                return early
             if max_abs(r) <= tolerances.residual:
                 return result(x, r, tolerances, Status.CONVERGED, "", 0, fun.count, history)
             H = InverseJacobian(problem_jacobian(problem, fun, x, r, fd)[0])

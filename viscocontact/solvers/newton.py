@@ -6,7 +6,7 @@ import numpy as np
 
 from .._validation import int_range, one_of, positive
 from ._fd import (DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, boolean,
-                  limit_step, linear_solve, max_abs, problem_jacobian, result)
+                  first_residual, limit_step, linear_solve, max_abs, problem_jacobian, result)
 from .base import NonlinearProblem, NonlinearSolver, SolverResult, Status, Tolerances
 
 __all__ = ["Newton"]
@@ -77,11 +77,9 @@ class Newton(NonlinearSolver):
         it = jacobians = halvings = 0
         status, message = Status.FAILED, ""
         try:
-            r = fun(x)
-            history.append(max_abs(r))
-            if not np.all(np.isfinite(r)):
-                return result(x, r, tolerances, Status.FAILED, "residual at x0 is not finite",
-                              0, fun.count, history)
+            r, early = first_residual(fun, x, tolerances, history)
+            if early is not None:
+                return early
             while True:
                 if max_abs(r) <= tolerances.residual:
                     status = Status.CONVERGED
