@@ -74,12 +74,12 @@ class _EdgeSystem:
         self.control = control
         self.cache = {}
         self.evaluations = 0
+        self.last_valid = None      # last edge vector that was a valid contact set
 
     def evaluate(self, x):
         key = x.tobytes()
         if key in self.cache:
             return self.cache[key]
-        self.last_valid = getattr(self, "last_valid", None)
         o = self.owner
         if not np.all(np.isfinite(x)):
             return None, None, np.full(len(x), np.inf)
@@ -282,6 +282,7 @@ class _Run:
     def equilibrate(self, edges, control):
         p = self.problem
         edges = np.asarray(edges, dtype=float)
+        fallback_first = False
         for _ in range(p.max_restarts):
             if edges.size == 0:
                 born = self.births_without_contact(control)
@@ -292,8 +293,8 @@ class _Run:
             self.n_edges = len(edges)
             system = _EdgeSystem(self, control)
             try:
-                if getattr(self, "_no_primary", False) and p.fallback is not None:
-                    self._no_primary = False
+                if fallback_first and p.fallback is not None:
+                    fallback_first = False
                     res = p.fallback.solve(system, edges, p.tolerances)
                 else:
                     res = p.solver.solve(system, edges, p.tolerances)
@@ -309,12 +310,12 @@ class _Run:
                 if change.full_contact:
                     # accept closure only if a small-step march closes the contact too (a Newton
                     # trial step may overshoot across the period)
-                    start = getattr(system, "last_valid", None)
+                    start = system.last_valid
                     if start is None or p.fallback is None or self._closes(start, control):
                         return self.full_contact(control)
                     self.events.append("closure rejected: a step overshot the period")
                     edges = start
-                    self._no_primary = True
+                    fallback_first = True
                     continue
                 edges = change.edges
                 continue
