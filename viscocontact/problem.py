@@ -171,12 +171,9 @@ class ContactProblem:
         factory=lambda: Bisection(initial_step=2e-3, growth=1.5))
 
     def __attrs_post_init__(self):
-        from .errors import ValidationError
+        from .scene import Load
 
-        if (self.mean_pressure is None) == (self.penetration is None):
-            raise ValidationError("load", {"mean_pressure": self.mean_pressure,
-                                           "penetration": self.penetration},
-                                  "exactly one of mean_pressure and penetration")
+        Load(mean_pressure=self.mean_pressure, penetration=self.penetration)  # validates
 
     @classmethod
     def from_scene(cls, scene, **options) -> "ContactProblem":

@@ -220,3 +220,27 @@ def first_residual(fun: "CountedResidual", x: np.ndarray, tolerances: Tolerances
         return r, result(x, r, tolerances, Status.FAILED, "residual at x0 is not finite",
                          0, fun.count, history)
     return r, None
+
+
+@attrs.frozen(kw_only=True)
+class FiniteDifferenceOptions:
+    """The finite-difference options shared by the Jacobian-based solvers (eqs. 4.49-4.50).
+
+    Parameters
+    ----------
+    difference : {"forward", "central"}
+        Scheme of the finite-difference Jacobian.
+    rel_step : float
+        Step relative to ``max(|x_i|, typical_scale)``.
+    typical_scale : float
+        Size of an unknown near zero.
+    """
+
+    difference: str = attrs.field(default="forward", validator=one_of(DIFFERENCES))
+    rel_step: float = attrs.field(default=1e-7, converter=float, validator=positive)
+    typical_scale: float = attrs.field(default=1.0, converter=float, validator=positive)
+
+    @property
+    def finite_difference(self) -> FiniteDifference:
+        return FiniteDifference(scheme=self.difference, rel_step=self.rel_step,
+                                typical_scale=self.typical_scale)

@@ -5,7 +5,7 @@ import attrs
 import numpy as np
 
 from .._validation import in_range, int_range, one_of, positive
-from ._fd import (DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, boolean,
+from ._fd import (FiniteDifferenceOptions, DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, boolean,
                   first_residual, limit_step, max_abs, problem_jacobian, result)
 from .base import NonlinearProblem, NonlinearSolver, SolverResult, Status, Tolerances
 
@@ -50,7 +50,7 @@ class InverseJacobian:
 
 
 @attrs.frozen(kw_only=True)
-class Broyden(NonlinearSolver):
+class Broyden(FiniteDifferenceOptions, NonlinearSolver):
     """Broyden's method ``x_{k+1} = x_k - α·H_k·r(x_k)`` (eqs. 4.40-4.42).
 
     Parameters
@@ -97,17 +97,9 @@ class Broyden(NonlinearSolver):
 
     relaxation: float = attrs.field(default=1.0, converter=float,
                                     validator=in_range(0.0, 1.0, lo_open=True))
-    difference: str = attrs.field(default="forward", validator=one_of(DIFFERENCES))
-    rel_step: float = attrs.field(default=1e-7, converter=float, validator=positive)
-    typical_scale: float = attrs.field(default=1.0, converter=float, validator=positive)
     restart: bool = attrs.field(default=True, validator=boolean)
     restart_after: int = attrs.field(default=2, validator=int_range(1))
     max_halvings: int = attrs.field(default=10, validator=int_range(0, 60))
-
-    @property
-    def finite_difference(self) -> FiniteDifference:
-        return FiniteDifference(scheme=self.difference, rel_step=self.rel_step,
-                                typical_scale=self.typical_scale)
 
     def _solve(self, problem: NonlinearProblem, x0: np.ndarray,
                tolerances: Tolerances) -> SolverResult:

@@ -5,7 +5,7 @@ import attrs
 import numpy as np
 
 from .._validation import int_range, one_of, positive
-from ._fd import (DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, boolean,
+from ._fd import (FiniteDifferenceOptions, DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, boolean,
                   first_residual, limit_step, linear_solve, max_abs, problem_jacobian, result)
 from .base import NonlinearProblem, NonlinearSolver, SolverResult, Status, Tolerances
 
@@ -17,7 +17,7 @@ def _merit(r: np.ndarray) -> float:
 
 
 @attrs.frozen(kw_only=True)
-class Newton(NonlinearSolver):
+class Newton(FiniteDifferenceOptions, NonlinearSolver):
     """Newton-Raphson: ``x_{k+1} = x_k - t_k·J(x_k)⁻¹ r(x_k)`` (eq. 4.35).
 
     Parameters
@@ -57,16 +57,8 @@ class Newton(NonlinearSolver):
     (True, 1.414213562, 4)
     """
 
-    difference: str = attrs.field(default="forward", validator=one_of(DIFFERENCES))
-    rel_step: float = attrs.field(default=1e-7, converter=float, validator=positive)
-    typical_scale: float = attrs.field(default=1.0, converter=float, validator=positive)
     damping: bool = attrs.field(default=True, validator=boolean)
     max_halvings: int = attrs.field(default=10, validator=int_range(0, 60))
-
-    @property
-    def finite_difference(self) -> FiniteDifference:
-        return FiniteDifference(scheme=self.difference, rel_step=self.rel_step,
-                                typical_scale=self.typical_scale)
 
     def _solve(self, problem: NonlinearProblem, x0: np.ndarray,
                tolerances: Tolerances) -> SolverResult:

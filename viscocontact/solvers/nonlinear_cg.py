@@ -9,7 +9,7 @@ from scipy.optimize import line_search as _scipy_line_search
 
 from .._validation import in_range, int_range, one_of, positive
 from ..errors import ValidationError
-from ._fd import (DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, max_abs,
+from ._fd import (FiniteDifferenceOptions, DIFFERENCES, BudgetExhausted, CountedResidual, FiniteDifference, max_abs,
                   result, step_bound)
 from .base import NonlinearProblem, NonlinearSolver, SolverResult, Status, Tolerances, optional
 
@@ -110,7 +110,7 @@ def _largest_step(bound: np.ndarray, d: np.ndarray) -> float:
 
 
 @attrs.frozen(kw_only=True)
-class NonlinearCG(NonlinearSolver):
+class NonlinearCG(FiniteDifferenceOptions, NonlinearSolver):
     """Nonlinear conjugate gradients minimising a merit function whose minimum is the root.
 
     Parameters
@@ -189,19 +189,11 @@ class NonlinearCG(NonlinearSolver):
     curvature: float = attrs.field(default=0.1, converter=float,
                                    validator=in_range(0.0, 1.0, lo_open=True, hi_open=True))
     max_backtracks: int = attrs.field(default=20, validator=int_range(1))
-    difference: str = attrs.field(default="forward", validator=one_of(DIFFERENCES))
-    rel_step: float = attrs.field(default=1e-7, converter=float, validator=positive)
-    typical_scale: float = attrs.field(default=1.0, converter=float, validator=positive)
 
     @curvature.validator
     def _curvature_above_armijo(self, attribute, value):
         if value <= self.armijo:
             in_range(self.armijo, 1.0, lo_open=True, hi_open=True)(self, attribute, value)
-
-    @property
-    def finite_difference(self) -> FiniteDifference:
-        return FiniteDifference(scheme=self.difference, rel_step=self.rel_step,
-                                typical_scale=self.typical_scale)
 
     # ---- pieces of one iteration -------------------------------------------------------
     def _precondition(self, obj: _Objective, p: _Point, g: np.ndarray) -> np.ndarray:
