@@ -23,6 +23,7 @@ import attrs
 import numpy as np
 
 from .._validation import in_range
+from ..contact.edges import limit_energy_release
 from .base import AdhesionModel, EdgeTerms
 
 #: Default ``q0·δX``: 1e-4 of the fundamental wavelength over 2π (0.1 µm for λ0 = 6.28 mm).
@@ -67,7 +68,7 @@ class EnergyBalance(AdhesionModel):
         du, dlp, used = np.empty(n), np.empty(n), np.empty(n)
         k = ctx.stress_intensity()
         if self.edge_perturbation == 0.0:
-            total = ctx.edge_compliance * k * np.abs(k) / 4.0
+            total = limit_energy_release(ctx)
             for i in range(n):
                 j = i // 2
                 tiny = 1e-6 * 0.5 * (ctx.mesh.edges[2 * j + 1] - ctx.mesh.edges[2 * j])
@@ -84,8 +85,11 @@ class EnergyBalance(AdhesionModel):
         return sign * np.abs(du + dlp) - dlp, dlp, used
 
     def residuals(self, ctx) -> np.ndarray:
-        du, dlp, _ = self._release(ctx)
-        g = du + dlp
+        if self.edge_perturbation == 0.0:
+            g = limit_energy_release(ctx)        # the split into δU and δL_P is not needed here
+        else:
+            du, dlp, _ = self._release(ctx)
+            g = du + dlp
         return np.sign(g) * np.sqrt(4 * np.abs(g)) - np.sqrt(4 * self.target(ctx.amplitude))
 
     def edge_terms(self, ctx) -> EdgeTerms:

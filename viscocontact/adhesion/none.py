@@ -4,6 +4,7 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
+from ..contact.edges import limit_energy_release
 from .base import AdhesionModel, EdgeTerms
 
 
@@ -17,6 +18,6 @@ class NoAdhesion(AdhesionModel):
     def edge_terms(self, ctx) -> EdgeTerms:
         k = ctx.stress_intensity()
         n = len(k)
-        return EdgeTerms(stored=ctx.edge_compliance * k * np.abs(k) / 4, nonconservative=np.zeros(n),
+        return EdgeTerms(stored=limit_energy_release(ctx), nonconservative=np.zeros(n),
                          target=0.0, effective_work=np.full(n, np.nan), stress_intensity=k,
                          edge_perturbation=0.0)
