@@ -2,8 +2,9 @@
 
 Each subcommand is a pair of small functions registered in :data:`SUBCOMMANDS`:
 ``configure(parser)`` adds its arguments and ``run(args) -> int`` does the work. Errors about user
-input (:class:`ValidationError`, :class:`PluginError`, missing files, TOML syntax) print one line
-to stderr and return exit code 2, never a traceback.
+input (:class:`ValidationError`, :class:`PluginError`, a foreign or damaged study file, missing
+files, TOML syntax) print one line to stderr and return exit code 2, never a traceback.
+``sweep`` and ``cycle`` return 1 when some point failed (it is stored with its reason).
 """
 from __future__ import annotations
 
@@ -13,7 +14,7 @@ import sys
 import tomllib
 from typing import Callable, Sequence
 
-from .errors import PluginError, ValidationError
+from .errors import ValidationError, ViscoContactError
 
 EXIT_USAGE = 2
 
@@ -116,26 +117,239 @@ def _run_solve(args: argparse.Namespace) -> int:
     return 0
 
 
+# ---- studies: shared options -------------------------------------------------------------------
+def _add_study_options(parser: argparse.ArgumentParser, kind: str) -> None:
+    parser.add_argument("scene", metavar="SCENE.toml", nargs="?",
+                        help="base scene (optional with --resume: the file's own is used)")
+    parser.add_argument("--seeds", metavar="SEEDS", default=None,
+                        help="profile seeds, one realization each: 'START:STOP' or 'A,B,C'")
+    parser.add_argument("--realizations", metavar="K", type=int, default=None,
+                        help="K realizations with seeds 0..K-1 (same as --seeds 0:K)")
+    parser.add_argument("--fields", action="store_true",
+                        help="also store pressure, displacement and gap of every point")
+    parser.add_argument("--elements", type=int, default=None, help="elements per contact")
+    parser.add_argument("--out", metavar="FILE.h5", default=None,
+                        help=f"study file (default: <scene name>_{kind}.h5 in this folder)")
+    parser.add_argument("--resume", action="store_true",
+                        help="continue an interrupted study file (same scene and parameters)")
+    parser.add_argument("--force", action="store_true", help="replace an existing study file")
+    parser.add_argument("--workers", metavar="N", type=int, default=1,
+                        help="compute independent chains in N processes (default 1)")
+    parser.add_argument("--scheduler", metavar="ADDRESS", default=None,
+                        help="send the points to this Dask distributed scheduler "
+                             "(pip install 'viscocontact[distributed]')")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--plot", action="store_true", help="also draw the PNG figures")
+
+
+def _seeds(args):
+    from .studies.base import parse_seeds
+
+    if args.seeds is not None and args.realizations is not None:
+        raise ValidationError("--realizations", args.realizations, "not both --seeds and "
+                                                                   "--realizations")
+    if args.realizations is not None:
+        if args.realizations < 1:
+            raise ValidationError("--realizations", args.realizations, "an integer >= 1")
+        return tuple(range(args.realizations))
+    return None if args.seeds is None else parse_seeds(args.seeds)
+
+
+def _discretization(args):
+    return None if args.elements is None else {"elements": args.elements}
+
+
+def _run_study_file(args, kind: str, build) -> int:
+    """Build the study (or take it from the file with --resume alone), run it, report."""
+    from pathlib import Path
+
+    from .studies import resume, run
+
+    options = dict(workers=args.workers, scheduler=args.scheduler,
+                   progress=None if args.quiet else sys.stderr)
+    if args.scene is None:
+        if not (args.resume and args.out):
+            raise ValidationError("SCENE.toml", None, "a scene file (or --resume --out FILE.h5 "
+                                                      "to continue a study file)")
+        data = resume(Path(args.out), **options)
+    else:
+        from .scene import Scene
+
+        scene_path = _path(args.scene)
+        study = build(Scene.from_toml(scene_path))
+        out = Path(args.out) if args.out else Path(f"{scene_path.stem}_{kind}.h5")
+        data = run(study, out, resume=args.resume, overwrite=args.force, **options)
+    if data.kind != kind:
+        raise ValidationError("--out", str(data.path), f"a {kind} study file (it holds a "
+                                                       f"{data.kind})")
+    failed = _report(data)
+    if args.plot:
+        from .plots import plot_study
+
+        for f in plot_study(data):
+            print(f"wrote {f}")
+    return 1 if failed else 0
+
+
+def _report(data) -> int:
+    """Print a summary of a study file; the number of points that failed."""
+    p = data.points
+    if data.kind == "sweep":
+        failed = int((~p["converged"]).sum())
+        axes = data.axes()
+        control = "p" if data.study.control == "mean_pressure" else "Delta"
+        print(f"{'variant':<13} {control:>8} {'zeta':>10} {'area':>10} {'mu/sqrt(m2)':>12} "
+              f"{'n':>3}")
+        area, fric = data.band("area"), data.band("reduced_friction")
+        for iv, variant in enumerate(axes["variant"]):
+            for il, load in enumerate(axes["load"]):
+                for iz, zeta in enumerate(axes["zeta"]):
+                    print(f"{variant:<13} {load:>8.4g} {zeta:>10.4g} "
+                          f"{area.mean[iv, il, iz]:>10.5g} {fric.mean[iv, il, iz]:>12.5g} "
+                          f"{area.count[iv, il, iz]:>3d}")
+    else:
+        from .studies.cycle import is_detached
+
+        rows = [dict(zip(p, values)) for values in zip(*p.values())]
+        failed = sum(1 for r in rows if not r["converged"]
+                     and not (r["phase"] == "retract" and is_detached(r)))
+        print(f"{'zeta':>10} {'gamma':>10} {'seed':>4} {'T':>10} {'Delta0':>9} {'Delta_out':>9} "
+              f"{'min p':>9}")
+        for cyc in data.cycles():
+            m = cyc["metrics"]
+            if m is None:
+                continue
+            print(f"{cyc['zeta']:>10.4g} {cyc['gamma']:>10.4g} {cyc['seed']:>4d} "
+                  f"{m.toughness:>10.5g} {m.zero_load_penetration:>9.4g} "
+                  f"{m.detachment_penetration:>9.4g} {m.pull_off_pressure:>9.4g}")
+    note = f", {failed} failed (see /points/message)" if failed else ""
+    print(f"wrote {data.path}: {len(data)} points{note}")
+    return failed
+
+
+# ---- sweep --------------------------------------------------------------------------------------
+def _configure_sweep(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--zetas", metavar="ZETAS", default=None,
+                        help="ζ values: 'START:STOP:N' log-spaced (e.g. 1e-4:1e3:15) or 'A,B,C'")
+    parser.add_argument("--loads", metavar="LOADS", default=None,
+                        help="values of the controlled load: 'A,B,C' or 'START:STOP:N' "
+                             "(default: the scene's)")
+    parser.add_argument("--control", choices=("mean_pressure", "penetration"), default=None,
+                        help="load control p̃∞ or penetration control Δ̃ (default: the scene's)")
+    parser.add_argument("--no-pair", dest="pair", action="store_false",
+                        help="only the scene's adhesion (default: an adhesive scene is swept "
+                             "with its adhesionless twin)")
+    parser.add_argument("--no-continuation", dest="continuation", action="store_false",
+                        help="solve every point from first touch instead of from its neighbour")
+    _add_study_options(parser, "sweep")
+
+
+def _run_sweep(args: argparse.Namespace) -> int:
+    """ζ-sweep of a scene (area and friction; adhesive and adhesionless) into an HDF5 file."""
+    from .studies import Sweep
+    from .studies.base import parse_numbers
+
+    def build(scene):
+        if args.zetas is None:
+            raise ValidationError("--zetas", None, "'START:STOP:N' (log-spaced) or a list")
+        options = {}
+        if args.loads is not None:
+            options["loads"] = parse_numbers("--loads", args.loads)
+        if args.control is not None:
+            options["control"] = args.control
+            if args.loads is None and args.control != scene.load.controlled:
+                raise ValidationError("--loads", None, f"values of {args.control} (the scene "
+                                                       f"is in {scene.load.controlled} control)")
+        return Sweep(scene=scene, zetas=parse_numbers("--zetas", args.zetas, log=True),
+                     seeds=_seeds(args), pair=args.pair, continuation=args.continuation,
+                     fields=args.fields, discretization=_discretization(args), **options)
+
+    return _run_study_file(args, "sweep", build)
+
+
+# ---- cycle --------------------------------------------------------------------------------------
+def _configure_cycle(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--max-penetration", metavar="D", type=float, default=None,
+                        help="Δ̃ at the turning point (required)")
+    parser.add_argument("--step", metavar="S", type=float, default=None,
+                        help="penetration step Δ̃ (required)")
+    parser.add_argument("--start", metavar="D", type=float, default=0.0,
+                        help="Δ̃ of the first approach point (default 0)")
+    parser.add_argument("--min-penetration", metavar="D", type=float, default=None,
+                        help="lowest Δ̃ of the retraction (default START - 2)")
+    parser.add_argument("--refine", metavar="R", type=int, default=4,
+                        help="bisection steps locating detachment (default 4)")
+    parser.add_argument("--max-failures", metavar="N", type=int, default=3,
+                        help="end a cycle after N failed points in a row (default 3)")
+    parser.add_argument("--zetas", metavar="ZETAS", default=None,
+                        help="one cycle per ζ: 'START:STOP:N' log-spaced or 'A,B,C' "
+                             "(default: the scene's)")
+    parser.add_argument("--gammas", metavar="GAMMAS", default=None,
+                        help="one cycle per γ̃ ('A,B,C'; 0 = adhesionless)")
+    _add_study_options(parser, "cycle")
+
+
+def _run_cycle(args: argparse.Namespace) -> int:
+    """Approach-retraction cycles in penetration control: hysteresis, pull-off, toughness."""
+    from .studies import Cycle
+    from .studies.base import parse_numbers
+
+    def build(scene):
+        for name in ("max_penetration", "step"):
+            if getattr(args, name) is None:
+                raise ValidationError(f"--{name.replace('_', '-')}", None, "a value (required)")
+        options = {}
+        if args.min_penetration is not None:
+            options["min_penetration"] = args.min_penetration
+        if args.zetas is not None:
+            options["zetas"] = parse_numbers("--zetas", args.zetas, log=True)
+        if args.gammas is not None:
+            options["gammas"] = parse_numbers("--gammas", args.gammas)
+        return Cycle(scene=scene, max_penetration=args.max_penetration, step=args.step,
+                     start=args.start, refine=args.refine, max_failures=args.max_failures,
+                     seeds=_seeds(args),
+                     fields=args.fields, discretization=_discretization(args), **options)
+
+    return _run_study_file(args, "cycle", build)
+
+
+# ---- plot ---------------------------------------------------------------------------------------
+def _configure_plot(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", metavar="FILE.h5", help="study file (sweep, cycle or study)")
+    parser.add_argument("--out", metavar="DIR", default=None,
+                        help="folder for the PNG files (default: next to FILE.h5)")
+
+
+def _run_plot(args: argparse.Namespace) -> int:
+    """Draw a study file: area and friction against ζ, or the load-penetration loops."""
+    from .plots import plot_study
+
+    for f in plot_study(_path(args.file), out=args.out):
+        print(f"wrote {f}")
+    return 0
+
+
 # ---- study --------------------------------------------------------------------------------------
 def _configure_study(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--out", default=".", help="folder for study.h5 and the PNG plots")
+    parser.add_argument("--workers", metavar="N", type=int, default=None,
+                        help="compute the points in N processes (default: one per CPU)")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
 
 
 def _run_study(args: argparse.Namespace) -> int:
     """Run the default study (wavy contact, area and friction against ζ) and plot it."""
-    from pathlib import Path
+    from .studies import load_study
+    from .study import WavyStudy
 
-    from .study import WavyStudy, plot, write_h5
+    import os
 
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    study = WavyStudy()
-    results = study.run()
-    write_h5(out / "study.h5", study, results)
-    for f in [out / "study.h5", *plot(out, results)]:
+    workers = args.workers if args.workers is not None else (os.cpu_count() or 1)
+    files = WavyStudy().run(args.out, workers=workers,
+                            progress=None if args.quiet else sys.stderr)
+    for f in files:
         print(f"wrote {f}")
-    ok = all(results[k]["converged"].all() for k in ("adhesive", "adhesionless"))
-    return 0 if ok else 1
+    return 0 if load_study(files[0]).points["converged"].all() else 1
 
 
 # ---- the parser ---------------------------------------------------------------------------------
@@ -148,6 +362,9 @@ SUBCOMMANDS: dict[str, tuple[Configure, Run]] = {
     "describe": (_configure_describe, _run_describe),
     "plugins": (_configure_plugins, _run_plugins),
     "solve": (_configure_solve, _run_solve),
+    "sweep": (_configure_sweep, _run_sweep),
+    "cycle": (_configure_cycle, _run_cycle),
+    "plot": (_configure_plot, _run_plot),
     "study": (_configure_study, _run_study),
 }
 
@@ -183,7 +400,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USAGE
     try:
         return args.run(args)
-    except (ValidationError, PluginError) as exc:
+    except ViscoContactError as exc:  # ValidationError, PluginError, StudyFileError
         print(f"viscocontact {args.command}: error: {_one_line(exc)}", file=sys.stderr)
     except tomllib.TOMLDecodeError as exc:
         print(f"viscocontact {args.command}: error: invalid TOML in "

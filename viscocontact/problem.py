@@ -23,8 +23,8 @@ from .adhesion.base import AdhesionModel
 from .adhesion.none import NoAdhesion
 from .contact.edges import EdgeContext
 from .contact.fields import NormalizedProfile, displacement, friction, solve_fields
-from .contact.mesh import build_mesh
-from .contact.topology import TWO_PI, TopologyChange, expanded, negative_regions, repair
+from .contact.mesh import MeshSpec, build_mesh, zone_patterns
+from .contact.topology import TWO_PI, TopologyChange, negative_regions, repair
 from .kernels.half_plane import HalfPlane
 from .result import ContactResult, SolveStatus
 from .solvers.base import NonlinearSolver, Tolerances
@@ -41,6 +41,14 @@ class Discretization:
         Elements per contact (eq. 4.21's N).
     clustering : float
         Exponent n of the node density of eq. 4.27 (>= 1/2).
+    edge_resolution : float or None
+        Size of the element at every edge relative to the smallest physical length below the
+        contact scale: the memory length of each dissipative relaxation branch (``ζ τ_i/τ``) and
+        the adhesion model's lengths (a finite δX). Geometric edge zones (ratio ``grading``) reach
+        it (see :mod:`viscocontact.contact.mesh`). ``None`` meshes with eq. 4.22 alone, which
+        resolves a length ℓ at an edge only when N ≳ √(α/ℓ).
+    grading : float
+        Ratio of consecutive element sizes in the edge zones.
     check_points : int
         Points of the uniform grid on which interpenetration is checked.
     path_step : float
@@ -49,12 +57,38 @@ class Discretization:
 
     elements: int = attrs.field(default=64, validator=int_range(8, 4096))
     clustering: float = attrs.field(default=1.0, validator=in_range(0.5, 4.0))
+    edge_resolution: float | None = attrs.field(default=0.1, validator=attrs.validators.optional(
+        in_range(1e-3, 1.0)))
+    grading: float = attrs.field(default=1.15, validator=in_range(1.05, 2.0))
     check_points: int = attrs.field(default=2048, validator=int_range(64, 1 << 20))
     path_step: float = attrs.field(default=0.05, validator=in_range(1e-4, 1.0))
 
 
 MIN_WIDTH = 1e-8
 MIN_GAP = 1e-8
+#: Lengths below this (q0-scaled) are not resolved by the edge zones: a memory length ζτ_i/τ
+#: below it changes areas by O(ζ/α) only, and resolving it costs elements at every edge.
+SMALLEST_RESOLVED = 1e-6
+
+
+def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
+    """The mesh of a problem: eq. 4.22 plus edge zones down to ``edge_resolution`` times the
+    smallest physical length (memory lengths of the dissipative branches, adhesion lengths).
+
+    An elastic kernel (no dissipative branch) gets no zones: its edge fields are self-similar
+    square-root fields, which eq. 4.22 with the calibrated fit already resolves, and its energy
+    terms are global (δU converges like the load, δL_P vanishes).
+    """
+    memory = [float(z) for z in getattr(kernel, "zetas", ())]
+    if disc.edge_resolution is None or not memory:
+        return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading)
+    advance = [ell for ell in adhesion.resolved_lengths() if ell > 0]
+    lengths = [ell for ell in memory + advance if 0 < ell < TWO_PI]  # longer: no zones needed
+    smallest = None
+    if lengths:
+        smallest = max(disc.edge_resolution * min(lengths), SMALLEST_RESOLVED)
+    return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading,
+                    smallest=smallest, advance=min(advance) if advance and smallest else None)
 
 
 @attrs.frozen(kw_only=True, eq=False)
@@ -69,9 +103,10 @@ class Prepared:
 class _EdgeSystem:
     """The nonlinear system in the edge positions for a fixed contact set."""
 
-    def __init__(self, owner: "_Run", control: dict):
+    def __init__(self, owner: "_Run", control: dict, edges):
         self.owner = owner
         self.control = control
+        self.zones = zone_patterns(edges, owner.spec)   # fixed: the residual is smooth in the edges
         self.cache = {}
         self.evaluations = 0
         self.last_valid = None      # last edge vector that was a valid contact set
@@ -86,10 +121,10 @@ class _EdgeSystem:
         new, changed, reason, full = repair(x, MIN_WIDTH, MIN_GAP)
         if changed:
             raise TopologyChange(reason, new, full)
-        mesh = build_mesh(x, o.disc.elements, o.disc.clustering)
+        mesh = build_mesh(x, o.spec, self.zones)
         fields = solve_fields(mesh, o.prep.kernel, o.prep.shape, **self.control)
-        ctx = EdgeContext(fields, o.prep.kernel, o.prep.shape, o.disc.elements, o.disc.clustering,
-                          o.prep.shape.amplitude)
+        ctx = EdgeContext(fields, o.prep.kernel, o.prep.shape, o.spec, o.prep.shape.amplitude,
+                          self.zones)
         r = o.problem.adhesion.residuals(ctx)
         self.evaluations += 1
         self.cache = {key: (fields, ctx, r)}
@@ -223,6 +258,7 @@ class _Run:
         self.problem = problem
         self.prep = prep
         self.disc = problem.discretization
+        self.spec = mesh_spec(self.disc, prep.kernel, problem.adhesion)
         self.iterations = 0
         self.evaluations = 0
         self.events: list[str] = []
@@ -288,7 +324,7 @@ class _Run:
                 edges = born
                 continue
             self.n_edges = len(edges)
-            system = _EdgeSystem(self, control)
+            system = _EdgeSystem(self, control, edges)
             try:
                 if fallback_first and p.fallback is not None:
                     fallback_first = False
@@ -346,7 +382,7 @@ class _Run:
 
     def _closes(self, edges, control) -> bool:
         """Whether the bisection march from ``edges`` closes the contact over the period."""
-        system = _EdgeSystem(self, control)
+        system = _EdgeSystem(self, control, edges)
         self.n_edges = len(edges)
         try:
             res = self.problem.fallback.solve(system, edges, self.problem.tolerances)
@@ -387,16 +423,53 @@ class _Run:
         p = self.problem
         target = ({"penetration": p.penetration} if p.penetration is not None
                   else {"mean_pressure": p.mean_pressure})
-        if initial is not None:
+        if initial is not None and getattr(initial, "full_contact", False):
+            out = self.from_full_contact(target)
+        elif initial is not None:
             edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()
             out = self.equilibrate(edges, target)
         else:
             out = self.approach(target)
         return self.assemble(out, target, want_fields, time.perf_counter() - t0)
 
+    def from_full_contact(self, target):
+        """Continue from a closed contact. With infinitely short-range adhesion a closed
+        interface has no flaw to open from (the energy release of a vanishing gap is zero), so
+        it stays closed at any load; without adhesion it stays closed while it carries no
+        tension, and otherwise the contact is found afresh along the approach path."""
+        if self.problem.adhesion.work_of_adhesion > 0:
+            return self.full_contact(target)
+        if "mean_pressure" in target and self.closure_supports(target["mean_pressure"]):
+            return self.full_contact(target)
+        if "penetration" in target:
+            _, _, _, osc = self.closed_stress()
+            if self.full_contact_mean_pressure(target["penetration"]) >= float(np.max(osc)):
+                return self.full_contact(target)
+        return self.approach(target)
+
+    def full_contact_mean_pressure(self, penetration: float) -> float:
+        """``p̃∞`` of the closed contact at a penetration (NaN on an incompressible solid)."""
+        _, rh, _, _ = self.closed_stress()
+        c0 = self.prep.kernel.mean
+        return -(penetration - 1.0 + rh[0].real) / (2 * np.pi * c0) if c0 != 0 else np.nan
+
     def approach(self, target):
+        if "penetration" in target and target["penetration"] <= 0:
+            # approached from afar, the profile first touches at Δ̃ = 0 (adhesion acts only on
+            # contact), so no contact exists yet; only a retraction path reaches Δ̃ <= 0 in contact
+            return self.no_contact(target)
         d0, edges = self.first_touch()
-        out = self.equilibrate(edges, {"penetration": d0})
+        if self.wants_to_grow(edges, {"penetration": d0}):
+            # adhesion pulls the first contact open at once (a JKR-like jump): look for the state
+            # it lands on instead of asking an equilibrium solver for one that does not exist
+            jump = self.snap(edges, {"penetration": d0})
+            if jump is not None:
+                self.events.append("first contact jumped")
+                out = jump
+            else:
+                out = self.equilibrate(edges, {"penetration": d0})
+        else:
+            out = self.equilibrate(edges, {"penetration": d0})
         if out[0] == "not_converged":
             # adhesion can make the first contact jump to a larger size at once
             jump = self.snap(edges, {"penetration": d0})
@@ -451,16 +524,31 @@ class _Run:
             step *= 0.5
             self.events.append(f"approach step halved to {step:.3g}")
 
+    def wants_to_grow(self, edges, control) -> bool:
+        """Whether every edge of ``edges`` has a negative residual (would advance outward)."""
+        self.n_edges = len(edges)
+        system = _EdgeSystem(self, control, edges)
+        try:
+            r = system.residual(edges)
+        except TopologyChange:
+            return False
+        self.evaluations += system.evaluations
+        return bool(np.all(np.isfinite(r)) and np.all(r < 0))
+
     def snap(self, edges, control):
         """Equilibrium reached by an unstable growth of the contacts (or None).
 
-        The contacts are widened geometrically; a candidate is only solved once some edge no
-        longer wants to grow (a single residual evaluation decides), and widening until the
-        contacts meet across the period gives full contact.
+        Every edge that wants to grow (negative residual) is moved outward by a step that
+        doubles each time, edges that do not are held; one residual evaluation per step decides.
+        Once no edge wants to grow the equilibrium is solved from there, and contacts that meet
+        across the period give full contact.
         """
+        x = np.asarray(edges, dtype=float).copy()
+        grow = np.ones(len(x), dtype=bool)
         factor = 0.5
         while factor < 1e4:
-            trial = expanded(edges, factor)
+            half = np.repeat(0.5 * (x[1::2] - x[0::2]), 2)
+            trial = x + np.where(grow, factor * half, 0.0) * np.tile([-1.0, 1.0], len(x) // 2)
             factor *= 2.0
             merged, changed, _, full = repair(trial, MIN_WIDTH, MIN_GAP)
             if full:
@@ -469,17 +557,21 @@ class _Run:
                     return self.full_contact(control)
                 return None
             self.n_edges = len(merged)
-            system = _EdgeSystem(self, control)
+            system = _EdgeSystem(self, control, merged)
             try:
                 r = system.residual(merged)
             except TopologyChange:
                 continue
             self.evaluations += system.evaluations
-            if np.all(np.isfinite(r)) and np.all(r < 0):
-                continue                  # every edge still wants to grow: widen further
+            if not np.all(np.isfinite(r)):
+                return None
+            x, grow = merged, r < 0
+            if np.any(grow):
+                continue                  # some edge still wants to grow: widen it further
             out = self.equilibrate(merged, control)
             if out[0] in ("converged", "full_contact"):
                 return out
+            return None
         return None
 
     # ---- the result -------------------------------------------------------------------------

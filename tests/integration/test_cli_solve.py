@@ -45,7 +45,7 @@ def test_solve_json(tmp_path, capsys):
 
 def test_solve_full_contact_is_a_legitimate_answer(tmp_path, capsys):
     path = tmp_path / "s.toml"
-    path.write_text(SCENE.replace("gamma = 1e-4", "gamma = 5e-4").replace("zeta = 1.0", "zeta = 0.1"))
+    path.write_text(SCENE.replace("gamma = 1e-4", "gamma = 5e-3").replace("zeta = 1.0", "zeta = 0.1"))
     assert main(["solve", str(path), "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["full_contact"] is True and out["edges"] == [] and out["converged"] is True

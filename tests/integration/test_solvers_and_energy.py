@@ -9,9 +9,9 @@ from viscocontact import _registry
 from viscocontact.adhesion import EnergyBalance, NoAdhesion
 from viscocontact.contact.edges import EdgeContext
 from viscocontact.contact.fields import NormalizedProfile, solve_fields
-from viscocontact.contact.mesh import build_mesh
+from viscocontact.contact.mesh import MeshSpec, build_mesh
 from viscocontact.kernels import HalfPlane
-from viscocontact.problem import ContactProblem
+from viscocontact.problem import ContactProblem, mesh_spec
 from viscocontact.profiles import Sinusoid
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Bisection, Broyden, Newton, NonlinearCG
@@ -66,12 +66,13 @@ def test_friction_vanishes_in_both_limits_and_peaks_near_zeta_one():
     assert 0.3 <= zetas[np.argmax(mu)] <= 3.0
 
 
-def _context(zeta, edges, penetration, n=128, rheology=SLS):
+def _context(zeta, edges, penetration, n=128, rheology=SLS, smallest=None):
     pk = HalfPlane().prepare(rheology, zeta)
     shape = NormalizedProfile.of(Sinusoid(amplitude=LAM))
-    mesh = build_mesh(np.asarray(edges, float), n, 1.0)
+    spec = MeshSpec(elements=n, smallest=smallest)
+    mesh = build_mesh(np.asarray(edges, float), spec)
     fields = solve_fields(mesh, pk, shape, penetration=penetration)
-    return EdgeContext(fields, pk, shape, n, 1.0, LAM)
+    return EdgeContext(fields, pk, shape, spec, LAM)
 
 
 @pytest.mark.parametrize("zeta", [0.01, 0.1, 1.0])
@@ -101,7 +102,7 @@ def test_elastic_edge_energy_is_irwin_and_conservative(left, right, penetration)
 def _dissipation_friction(prob, prep, result):
     """μ from the power fed into the bulk: 4π Σ|σ̂_m|² Im[S_m K(m)], μ = Λ̃ power/(2π p̃∞)."""
     e = result.edges.ravel()
-    mesh = build_mesh(e, prob.discretization.elements, prob.discretization.clustering)
+    mesh = build_mesh(e, mesh_spec(prob.discretization, prep.kernel, prob.adhesion))
     f = solve_fields(mesh, prep.kernel, prep.shape, mean_pressure=prob.mean_pressure)
     m = np.arange(1, 200_001, dtype=float)
     sig_hat = np.zeros(m.shape, complex)

@@ -51,6 +51,11 @@ class EdgeTerms:
 class AdhesionModel(abc.ABC):
     """Edge closing condition; see the module docstring for the contract."""
 
+    def resolved_lengths(self) -> tuple[float, ...]:
+        """Lengths (q0-scaled) of the model that the mesh must resolve at every edge, such as a
+        finite virtual edge advance; the orchestrator grades the edge zones below the smallest."""
+        return ()
+
     @property
     def work_of_adhesion(self) -> float:
         """γ̃ (0 without adhesion)."""

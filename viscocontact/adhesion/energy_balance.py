@@ -46,6 +46,9 @@ class EnergyBalance(AdhesionModel):
     edge_perturbation: float = attrs.field(default=DEFAULT_EDGE_PERTURBATION,
                                            validator=in_range(0.0, 0.1))
 
+    def resolved_lengths(self) -> tuple[float, ...]:
+        return (self.edge_perturbation,) if self.edge_perturbation > 0 else ()
+
     def _advance(self, ctx, i: int) -> float:
         edges = ctx.mesh.edges
         j = i // 2

@@ -1,0 +1,176 @@
+"""The unit of work of every study: one equilibrium, a pure function of plain data.
+
+:func:`solve_point` takes the complete scene of the point (a plain dict, as
+:meth:`~viscocontact.scene.Scene.to_dict` writes it), a :class:`PointSpec` (bookkeeping and
+discretization) and the contact set to start from, and returns one :data:`record <COLUMNS>` — a
+flat dict of plain values with a fixed schema. Nothing else enters the computation, so a point gives
+the same bits in this process, in a process pool or on a Dask worker (BLAS runs single-threaded
+during the solve, see :func:`~viscocontact.studies.parallel.single_blas_thread`), and a resumed
+study continues from the stored edges exactly as an uninterrupted one would.
+
+A point that raises is not lost: its record has ``status = "error"`` and the exception as message.
+"""
+from __future__ import annotations
+
+import collections
+import json
+import time
+from typing import Any, Mapping
+
+import attrs
+import numpy as np
+
+#: Record columns written for every point: name -> kind (``int``, ``float``, ``bool``, ``str`` or
+#: ``edges``, a flattened ``[X̃_start, X̃_end, ...]`` array of variable length).
+COLUMNS: dict[str, str] = {
+    # where the point sits in the study
+    "chain": "int", "step": "int", "phase": "str", "started_from": "str",
+    "variant": "str", "seed": "int", "gamma": "float", "load": "float",
+    "zeta": "float", "control": "str", "target": "float",
+    # the result (ContactResult's scalar keys; status "error" when the solve raised)
+    "status": "str", "converged": "bool", "message": "str",
+    "area": "float", "mean_pressure": "float", "penetration": "float", "friction": "float",
+    "reduced_friction": "float", "n_contacts": "int", "full_contact": "bool",
+    "residual": "float", "iterations": "int", "function_evaluations": "int",
+    "edge_perturbation": "float", "min_gap": "float", "seconds": "float", "edges": "edges",
+}
+
+#: Columns that depend on the machine's speed, not on the numerics (left out of comparisons).
+TIMING_COLUMNS = ("seconds",)
+
+#: ``started_from`` values.
+FIRST_TOUCH, NEIGHBOUR, NO_CONTACT = "first touch", "neighbour", "no contact"
+
+ERROR = "error"
+
+
+@attrs.frozen(kw_only=True)
+class PointSpec:
+    """What a point needs besides its scene.
+
+    Parameters
+    ----------
+    chain, step : int
+        Position of the point: index of its chain in the study and of the point along the chain.
+    phase : str
+        ``"sweep"``, ``"approach"`` or ``"retract"``.
+    started_from : str
+        ``"first touch"`` (the approach path of :meth:`ContactProblem.solve` with no initial
+        contact set), ``"neighbour"`` (the edges of the previous point of the chain) or
+        ``"no contact"`` (an empty contact set: contacts are born where the profile penetrates).
+    fields : bool
+        Also return pressure, displacement and gap on the check grid.
+    discretization : dict or None
+        Keyword arguments of :class:`~viscocontact.problem.Discretization` (default mesh if None).
+    labels : dict
+        The chain's labels copied into the record (``variant``, ``seed``, ``gamma``, ``load``).
+    """
+
+    chain: int
+    step: int
+    phase: str
+    started_from: str = FIRST_TOUCH
+    fields: bool = False
+    discretization: Mapping[str, Any] | None = None
+    labels: Mapping[str, Any] = attrs.field(factory=dict)
+
+
+def solve_point(scene: Mapping[str, Any], spec: PointSpec,
+                initial: np.ndarray | None = None) -> dict[str, Any]:
+    """Solve one point; never raises for a failing solve.
+
+    Parameters
+    ----------
+    scene : dict
+        The full scene of this point (``Scene.to_dict()`` form, with its own ζ and load).
+    spec : PointSpec
+    initial : ndarray or None
+        Contact set to start from, shape ``(n, 2)`` or flat ``(2n,)``; an empty array starts from
+        no contact, ``None`` follows the approach path from first touch.
+
+    Returns
+    -------
+    dict
+        One value per :data:`COLUMNS` key, plus ``"fields"`` (a dict of arrays or None).
+    """
+    from .parallel import single_blas_thread
+
+    t0 = time.perf_counter()
+    record = _skeleton(scene, spec)
+    try:
+        with single_blas_thread():
+            result = _solve(scene, spec, initial)
+    except Exception as exc:  # stored with its reason; the study goes on
+        record.update(status=ERROR, converged=False, message=f"{type(exc).__name__}: {exc}")
+        record["seconds"] = time.perf_counter() - t0
+        return record
+    out = result.to_dict()
+    for key in COLUMNS:
+        if key in out and key not in ("edges", "zeta"):
+            record[key] = out[key]
+    record["edges"] = np.asarray(result.edges, dtype=float).ravel()
+    record["fields"] = ({k: np.asarray(v, dtype=float) for k, v in result.fields.items()}
+                        if spec.fields and result.fields is not None else None)
+    record["seconds"] = time.perf_counter() - t0
+    return record
+
+
+def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
+    load = scene["load"]
+    control = next(iter(load))
+    record: dict[str, Any] = {
+        "chain": spec.chain, "step": spec.step, "phase": spec.phase,
+        "started_from": spec.started_from, "variant": "", "seed": -1, "gamma": np.nan,
+        "load": np.nan, "zeta": float(scene["sliding"]["zeta"]), "control": control,
+        "target": float(load[control]), "status": ERROR, "converged": False, "message": "",
+        "n_contacts": 0, "full_contact": False, "iterations": 0, "function_evaluations": 0,
+        "edges": np.zeros(0), "fields": None}
+    for key, kind in COLUMNS.items():
+        if kind == "float" and key not in record:
+            record[key] = np.nan
+    record.update(spec.labels)
+    return record
+
+
+def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
+    from ..problem import ContactProblem, Discretization
+    from ..scene import Scene
+
+    options = {}
+    if spec.discretization:
+        options["discretization"] = Discretization(**spec.discretization)
+    problem = ContactProblem.from_scene(Scene.from_dict(scene), **options)
+    prepared = _prepared(scene, problem)
+    start = None if initial is None else np.asarray(initial, dtype=float).reshape(-1)
+    return problem.solve(initial=start, fields=spec.fields, prepared=prepared)
+
+
+# kernel tables depend only on profile, rheology, kernel and ζ: a small cache keyed by exactly
+# these inputs serves the many points of a cycle (fixed ζ) without any effect on the numbers
+_PREPARED: collections.OrderedDict = collections.OrderedDict()
+_PREPARED_SIZE = 4
+
+
+def _prepared(scene: Mapping[str, Any], problem):
+    key = json.dumps([scene.get(s) for s in ("profile", "rheology", "kernel", "poisson")]
+                     + [scene["sliding"]["zeta"]], sort_keys=True, default=str)
+    if key in _PREPARED:
+        _PREPARED.move_to_end(key)
+        return _PREPARED[key]
+    prepared = problem.prepare()
+    _PREPARED[key] = prepared
+    while len(_PREPARED) > _PREPARED_SIZE:
+        _PREPARED.popitem(last=False)
+    return prepared
+
+
+def has_contact(record: Mapping[str, Any]) -> bool:
+    """Whether a record is a converged equilibrium with at least one contact (or full contact)."""
+    return bool(record["converged"]) and (record["n_contacts"] > 0 or bool(record["full_contact"]))
+
+
+def carried_edges(record: Mapping[str, Any]) -> np.ndarray | None:
+    """The contact set a following point can start from (None: full contact cannot be carried)."""
+    if not has_contact(record) or record["full_contact"]:
+        return None
+    return np.asarray(record["edges"], dtype=float)

@@ -1,0 +1,101 @@
+"""Running a study: chains scheduled on a backend, each finished point appended to the file."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import TextIO
+
+from . import storage
+from .base import Study
+from .data import StudyData, load_study
+from .parallel import backend as make_backend
+from .point import solve_point
+from .progress import Progress
+
+
+def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = False,
+        overwrite: bool = False, progress: TextIO | None = sys.stderr) -> StudyData:
+    """Compute a study into the HDF5 file ``path`` and return what the file holds.
+
+    Parameters
+    ----------
+    study : Sweep or Cycle
+    path : str or Path
+        The study file (see :mod:`~viscocontact.studies.storage` for its layout).
+    workers : int
+        Worker processes (1: compute in this process).
+    scheduler : str or distributed.Client, optional
+        Address of a Dask distributed scheduler (overrides ``workers``).
+    resume : bool
+        Continue the study in an existing file (its scene and parameters must equal
+        ``study``'s; finished points are kept and not recomputed). A missing file starts afresh.
+    overwrite : bool
+        Replace an existing file. Without ``resume`` or ``overwrite`` an existing file is an error.
+    progress : file or None
+        Where the progress bar goes (default stderr; None: silent).
+
+    Notes
+    -----
+    Chains are independent and run concurrently; the points of a chain run one after the other,
+    each from the previous point's contact set (see :mod:`~viscocontact.studies.parallel`). A
+    point is appended to the file as soon as it is back, whatever the order in which chains finish.
+    """
+    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+        from ..errors import ValidationError
+
+        raise ValidationError("workers", workers, "an integer >= 1")
+    path = Path(path)
+    if path.exists() and resume:
+        header = storage.read_header(path)
+        storage.check_same_study(path, header, study)
+        storage.note_resume(path)
+        done = storage.records(storage.read_points(path))
+    elif path.exists() and not overwrite:
+        raise storage.StudyFileError(f"{path} exists: resume it (--resume) or replace it "
+                                     "(--force)")
+    else:
+        storage.create(path, study)
+        done = {}
+
+    chains = study.chains()
+    records = {c.index: list(done.get(c.index, [])) for c in chains}
+    bar = Progress(study.kind, sum(study.expected_points(c, records[c.index]) for c in chains),
+                   done=sum(len(r) for r in records.values()), stream=progress)
+    pool = make_backend(workers, scheduler)
+    pending = {}
+    try:
+        def submit(chain):
+            nxt = study.next_point(chain, records[chain.index])
+            if nxt is not None:
+                pending[pool.submit(solve_point, *nxt)] = chain
+
+        for chain in chains:
+            submit(chain)
+        while pending:
+            for handle in pool.wait(list(pending)):
+                chain = pending.pop(handle)
+                record = handle.result()
+                storage.append(path, record)
+                record.pop("fields", None)
+                records[chain.index].append(record)
+                total = sum(study.expected_points(c, records[c.index]) for c in chains)
+                bar.update(total=total, note=_note(record))
+                submit(chain)
+    finally:
+        pool.close()
+        bar.close()
+    storage.set_complete(path, True)
+    return load_study(path)
+
+
+def _note(record) -> str:
+    control = "p̃∞" if record["control"] == "mean_pressure" else "Δ̃"
+    return (f"{record['variant']} ζ={record['zeta']:.3g} {control}={record['target']:.3g} "
+            f"{record['status']}")
+
+
+def resume(path, **options) -> StudyData:
+    """Continue the study a file holds (its own scene and parameters); see :func:`run`."""
+    header = storage.read_header(path)
+    study = storage.study_from_header(header)
+    return run(study, path, resume=True, **options)

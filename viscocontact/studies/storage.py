@@ -1,0 +1,268 @@
+"""One HDF5 file per study, written point by point (layout in ``docs/studies.md``).
+
+::
+
+    /                    attrs: format = "viscocontact.study", format_version = 1, kind,
+                                viscocontact_version, created, complete (+ resumed_with_version)
+    /scene               the base scene as TOML text
+    /study               the study parameters as JSON text
+    /seeds               int64 [K], the profile seeds (empty without realizations)
+    /points              attrs: count = number of finished points
+    /points/<column>     one 1-D dataset per column of point.COLUMNS, one row per point
+                         (str columns are UTF-8 strings, ``edges`` variable-length float64)
+    /fields/<row>        x, pressure, displacement, gap of point <row> (6 digits; on request)
+
+The header is written to a temporary file that is renamed into place, so a study file either
+exists complete with its header or not at all. Each finished point is appended by opening the
+file, writing the row, raising ``/points.count`` last and closing it, so a killed run leaves a
+file holding every point finished before the kill; rows beyond ``count`` (a write cut short) are
+ignored and overwritten on resume. The file is opened only for the moment of a write, which keeps
+it readable (``viscocontact plot``) while the study runs.
+"""
+from __future__ import annotations
+
+import datetime
+import json
+import os
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+
+from ..errors import ValidationError, ViscoContactError
+from .point import COLUMNS
+
+FORMAT = "viscocontact.study"
+FORMAT_VERSION = 1
+FIELD_NAMES = ("x", "pressure", "displacement", "gap")
+
+
+class StudyFileError(ViscoContactError):
+    """A study file that cannot be used: not HDF5, damaged, foreign, or of another study."""
+
+
+def _h5py():
+    import h5py
+
+    return h5py
+
+
+def _dtype(kind: str):
+    h5py = _h5py()
+    return {"int": np.int64, "float": np.float64, "bool": np.bool_,
+            "str": h5py.string_dtype("utf-8"), "edges": h5py.vlen_dtype(np.float64)}[kind]
+
+
+def _open(path: Path, mode: str):
+    h5py = _h5py()
+    if not path.exists():
+        raise FileNotFoundError(2, "No such file", str(path))
+    if path.is_dir():
+        raise StudyFileError(f"{path} is a folder, not a study file")
+    try:
+        return h5py.File(path, mode)
+    except OSError as exc:
+        text = str(exc)
+        if "lock" in text:
+            raise StudyFileError(f"{path} is being written by another process (HDF5 file lock): "
+                                 "try again in a moment") from exc
+        raise StudyFileError(f"{path} is not a readable HDF5 file (damaged, truncated or not "
+                             f"HDF5): {text}") from exc
+
+
+def _check_header(f, path: Path) -> None:
+    fmt = f.attrs.get("format")
+    if isinstance(fmt, bytes):
+        fmt = fmt.decode()
+    if fmt != FORMAT:
+        raise StudyFileError(f"{path} is an HDF5 file but not a viscocontact study file (its "
+                             f"'format' attribute is {fmt!r}, expected {FORMAT!r})")
+    version = int(f.attrs.get("format_version", -1))
+    if version > FORMAT_VERSION or version < 1:
+        raise StudyFileError(f"{path} has study-file format version {version}; this viscocontact "
+                             f"reads versions 1 to {FORMAT_VERSION} (upgrade viscocontact)")
+    for name in ("scene", "study", "seeds", "points"):
+        if name not in f:
+            raise StudyFileError(f"{path} is damaged: /{name} is missing")
+    count = int(f["points"].attrs.get("count", -1))
+    if count < 0:
+        raise StudyFileError(f"{path} is damaged: /points has no 'count' attribute")
+    for column in COLUMNS:
+        if column not in f["points"]:
+            raise StudyFileError(f"{path} is damaged: /points/{column} is missing")
+        if f["points"][column].shape[0] < count:
+            raise StudyFileError(f"{path} is damaged: /points/{column} has "
+                                 f"{f['points'][column].shape[0]} rows, /points.count says {count}")
+
+
+# ---- writing ------------------------------------------------------------------------------------
+def create(path, study) -> None:
+    """Write the header of a new study file (atomically: temporary file, then rename)."""
+    from .. import __version__
+
+    h5py = _h5py()
+    path = Path(path)
+    tmp = path.with_name(path.name + ".tmp")
+    with h5py.File(tmp, "w") as f:
+        f.attrs["format"] = FORMAT
+        f.attrs["format_version"] = FORMAT_VERSION
+        f.attrs["kind"] = study.kind
+        f.attrs["viscocontact_version"] = __version__
+        f.attrs["created"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
+            timespec="seconds")
+        f.attrs["complete"] = False
+        f.create_dataset("scene", data=study.scene.to_toml(), dtype=h5py.string_dtype("utf-8"))
+        f.create_dataset("study", data=json.dumps(study.params()),
+                         dtype=h5py.string_dtype("utf-8"))
+        f.create_dataset("seeds", data=np.asarray(study.seeds or (), dtype=np.int64))
+        points = f.create_group("points")
+        points.attrs["count"] = 0
+        for column, kind in COLUMNS.items():
+            points.create_dataset(column, shape=(0,), maxshape=(None,), chunks=(256,),
+                                  dtype=_dtype(kind))
+        f.create_group("fields")
+    os.replace(tmp, path)
+
+
+def append(path, record: Mapping[str, Any]) -> int:
+    """Append one point (a :func:`~viscocontact.studies.point.solve_point` record); its row."""
+    path = Path(path)
+    with _open(path, "r+") as f:
+        points = f["points"]
+        row = int(points.attrs["count"])
+        for column, kind in COLUMNS.items():
+            ds = points[column]
+            if ds.shape[0] < row + 1:
+                ds.resize((row + 1,))
+            value = record[column]
+            if kind == "edges":
+                value = np.asarray(value, dtype=np.float64).ravel()
+            elif kind == "str":
+                value = str(value)
+            ds[row] = value
+        fields = record.get("fields")
+        name = f"{row:06d}"
+        if name in f["fields"]:
+            del f["fields"][name]          # left over from a write cut short
+        if fields:
+            group = f["fields"].create_group(name)
+            for key in FIELD_NAMES:
+                if key in fields:
+                    group.create_dataset(key, data=np.asarray(fields[key], dtype=np.float64))
+        points.attrs["count"] = row + 1    # last: the row now counts
+        f.flush()
+    return row
+
+
+def set_complete(path, complete: bool) -> None:
+    """Mark the study finished (every chain has ended) or not."""
+    with _open(Path(path), "r+") as f:
+        f.attrs["complete"] = bool(complete)
+
+
+def note_resume(path) -> None:
+    """Record the version of viscocontact that resumed the study (if it differs)."""
+    from .. import __version__
+
+    with _open(Path(path), "r+") as f:
+        if str(f.attrs.get("viscocontact_version")) != __version__:
+            f.attrs["resumed_with_version"] = __version__
+
+
+# ---- reading ------------------------------------------------------------------------------------
+def _text(ds) -> str:
+    value = ds[()]
+    return value.decode("utf-8") if isinstance(value, bytes) else str(value)
+
+
+def read_header(path) -> dict[str, Any]:
+    """``kind``, ``scene`` (TOML), ``params``, ``seeds``, ``version``, ``created``, ``complete``,
+    ``count`` of a study file; raises :class:`StudyFileError` for a foreign or damaged file."""
+    path = Path(path)
+    with _open(path, "r") as f:
+        _check_header(f, path)
+        try:
+            params = json.loads(_text(f["study"]))
+        except ValueError as exc:
+            raise StudyFileError(f"{path} is damaged: /study is not JSON ({exc})") from exc
+        attrs_ = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in f.attrs.items()}
+        return {"kind": str(attrs_.get("kind")), "scene": _text(f["scene"]), "params": params,
+                "seeds": np.asarray(f["seeds"][()], dtype=np.int64),
+                "version": str(attrs_.get("viscocontact_version")),
+                "created": str(attrs_.get("created", "")),
+                "complete": bool(attrs_.get("complete", False)),
+                "count": int(f["points"].attrs["count"])}
+
+
+def read_points(path) -> dict[str, np.ndarray]:
+    """Every finished point: one array per column (``edges``: an object array of float arrays)."""
+    path = Path(path)
+    with _open(path, "r") as f:
+        _check_header(f, path)
+        points = f["points"]
+        n = int(points.attrs["count"])
+        out: dict[str, np.ndarray] = {}
+        for column, kind in COLUMNS.items():
+            ds = points[column]
+            if kind == "str":
+                out[column] = np.array(ds.asstr()[:n] if n else [], dtype=str)
+            elif kind == "edges":
+                values = ds[:n] if n else []
+                arr = np.empty(n, dtype=object)
+                for i, v in enumerate(values):
+                    arr[i] = np.asarray(v, dtype=np.float64)
+                out[column] = arr
+            else:
+                out[column] = np.asarray(ds[:n], dtype=_dtype(kind))
+        return out
+
+
+def read_fields(path, row: int) -> dict[str, np.ndarray] | None:
+    """The fields stored for point ``row`` (None if none were stored)."""
+    path = Path(path)
+    with _open(path, "r") as f:
+        _check_header(f, path)
+        group = f["fields"].get(f"{int(row):06d}")
+        if group is None or int(row) >= int(f["points"].attrs["count"]):
+            return None
+        return {k: np.asarray(group[k][()]) for k in group}
+
+
+def records(points: Mapping[str, np.ndarray]) -> dict[int, list[dict[str, Any]]]:
+    """Rows grouped by chain, each chain in step order (the records a study continues from)."""
+    n = len(points["chain"])
+    out: dict[int, list[dict[str, Any]]] = {}
+    order = np.lexsort((points["step"], points["chain"])) if n else []
+    for i in order:
+        row = {k: (v[i].item() if hasattr(v[i], "item") and k != "edges" else v[i])
+               for k, v in points.items()}
+        out.setdefault(int(row["chain"]), []).append(row)
+    return out
+
+
+def study_from_header(header: Mapping[str, Any]):
+    """The :class:`~viscocontact.studies.base.Study` a study file holds."""
+    from ..scene import Scene
+    from .cycle import Cycle
+    from .sweep import Sweep
+
+    kinds = {"sweep": Sweep, "cycle": Cycle}
+    if header["kind"] not in kinds:
+        raise StudyFileError(f"unknown study kind {header['kind']!r} (expected one of "
+                             f"{sorted(kinds)})")
+    return kinds[header["kind"]].from_params(Scene.from_toml(header["scene"]), header["params"])
+
+
+def check_same_study(path, header: Mapping[str, Any], study) -> None:
+    """Raise a :class:`ValidationError` naming the first parameter that differs from the file."""
+    where = f"the value stored in {path} (--resume continues the study the file holds)"
+    if header["kind"] != study.kind:
+        raise ValidationError("study kind", study.kind, f"{header['kind']!r}, {where}")
+    if header["scene"] != study.scene.to_toml():
+        raise ValidationError("scene", "(the given scene)", f"the scene stored in {path}, which "
+                              "differs (--resume continues the study the file holds)")
+    new = json.loads(json.dumps(study.params()))
+    for key in sorted(set(new) | set(header["params"])):
+        if new.get(key) != header["params"].get(key):
+            raise ValidationError(f"{study.kind}.{key}", new.get(key),
+                                  f"{header['params'].get(key)!r}, {where}")
