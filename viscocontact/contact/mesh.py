@@ -89,7 +89,7 @@ def tip_elements(spec: MeshSpec) -> int:
 
 def _junction(d: np.ndarray, spec: MeshSpec) -> int:
     """First clustered node from which the spacing grows by at most ``grading`` per element (and
-    no further than 40% of the half-width)."""
+    no further than 40% of the contact width from the edge)."""
     half = spec.elements // 2
     ok = np.flatnonzero(np.diff(d)[1:half] <= (spec.grading - 1.0) * d[1:half])
     first = int(ok[0]) + 1 if ok.size else half
