@@ -313,6 +313,20 @@ def _run_cycle(args: argparse.Namespace) -> int:
     return _run_study_file(args, "cycle", build)
 
 
+# ---- validate -----------------------------------------------------------------------------------
+def _configure_validate(parser: argparse.ArgumentParser) -> None:
+    from .validation import configure_parser
+
+    configure_parser(parser)
+
+
+def _run_validate(args: argparse.Namespace) -> int:
+    """Regenerate the validation report (docs/validation.md and its figures)."""
+    from .validation import run
+
+    return run(args)
+
+
 # ---- plot ---------------------------------------------------------------------------------------
 def _configure_plot(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", metavar="FILE.h5", help="study file (sweep, cycle or study)")
@@ -366,6 +380,7 @@ SUBCOMMANDS: dict[str, tuple[Configure, Run]] = {
     "cycle": (_configure_cycle, _run_cycle),
     "plot": (_configure_plot, _run_plot),
     "study": (_configure_study, _run_study),
+    "validate": (_configure_validate, _run_validate),
 }
 
 

@@ -14,7 +14,8 @@ next to a large one keep its accuracy.
 .. math:: \mathrm{Cl}_2(\theta) = \theta - \theta\log|\theta|
           + \theta\sum_{k\ge1} \frac{2\zeta(2k)}{(2\pi)^{2k}\,2k(2k+1)}\,\theta^{2k},
 
-whose terms shrink at least as ``4^{-k}`` on ``|θ| <= π``; 30 terms give full double precision.
+whose terms shrink at least as ``4^{-k}`` on ``|θ| <= π``; 30 terms give full double precision, and
+the polynomial in ``θ²`` they sum to is economized to degree 14 for speed.
 """
 from __future__ import annotations
 
@@ -28,9 +29,36 @@ _K = np.arange(1, 31)
 _CL2_COEF = (2.0 * _riemann_zeta(2.0 * _K) / (TWO_PI ** (2 * _K) * (2 * _K) * (2 * _K + 1)))[::-1].copy()
 
 
+def _economized(degree: int = 14) -> np.ndarray:
+    """The 30-term series in ``u = θ²`` replaced by its least-squares polynomial of ``degree`` on
+    ``[0, π²]`` (Horner order): the same values to 7e-16 (``tests/unit/kernels``) at half the cost."""
+    u = np.linspace(0.0, np.pi**2, 2001)
+    series = np.zeros_like(u)
+    for c in _CL2_COEF:
+        series = series * u + c
+    return np.polynomial.Polynomial.fit(u, series, degree).convert().coef[::-1].copy()
+
+
+_CL2_FAST = _economized()
+
+
 def wrap(x):
-    """Reduce ``x`` to ``[-π, π)``."""
-    return np.mod(np.asarray(x, dtype=float) + np.pi, TWO_PI) - np.pi
+    """Reduce ``x`` to ``[-π, π)``.
+
+    Arguments within ``[-3π, 3π)`` (differences of two points of one period, the common case)
+    take one shift of ``2π``, several times faster than the general ``mod`` reduction.
+    """
+    t = np.array(x, dtype=float)          # a copy: shifted in place below
+    if t.size == 0:
+        return t
+    lo, hi = t.min(), t.max()
+    if not (lo >= -3.0 * np.pi and hi < 3.0 * np.pi):
+        return np.mod(t + np.pi, TWO_PI) - np.pi
+    if hi >= np.pi:
+        t[t >= np.pi] -= TWO_PI
+    if lo < -np.pi:
+        t[t < -np.pi] += TWO_PI
+    return t
 
 
 def cl2(x):
@@ -54,7 +82,7 @@ def cl2(x):
     t = wrap(x)
     t2 = t * t
     acc = np.zeros_like(t)
-    for c in _CL2_COEF:
+    for c in _CL2_FAST:
         acc = acc * t2 + c
     with np.errstate(divide="ignore", invalid="ignore"):
         lg = np.where(t == 0.0, 0.0, t * np.log(np.abs(t)))
