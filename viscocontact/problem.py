@@ -241,9 +241,18 @@ class ContactProblem:
         raise_on_failure : bool
             Raise :class:`~viscocontact.errors.ConvergenceError` (carrying the result) instead of
             returning a result with ``converged = False``.
+
+        Notes
+        -----
+        BLAS runs single-threaded during the solve: the dense systems are a few hundred to a few
+        thousand unknowns, where a second thread costs more than it gains on a loaded machine,
+        and the result is then the same to the last bit as in a study's worker processes.
         """
-        run = _Run(self, prepared or self.prepare())
-        result = run.solve(initial, fields)
+        from ._blas import single_blas_thread
+
+        with single_blas_thread():      # small dense systems: threads cost more than they gain
+            run = _Run(self, prepared or self.prepare())
+            result = run.solve(initial, fields)
         if raise_on_failure and not result.converged:
             from .errors import ConvergenceError
 

@@ -50,6 +50,8 @@ def clustered_nodes(alpha: float, n_elements: int, exponent: float) -> np.ndarra
 #: Largest edge element relative to the half-width when a zone is asked for: keeps the elements
 #: that the stress-intensity fit sees self-similar, so that one calibration serves every contact.
 ZONE_CAP = 1e-3
+#: Largest extent of an edge zone, relative to the half-width of its contact.
+ZONE_REACH = 0.4
 #: Largest δX/h for which the equal edge elements are aligned with the edge advance δX.
 ALIGN_MAX = 20
 
@@ -89,11 +91,12 @@ def tip_elements(spec: MeshSpec) -> int:
 
 def _junction(d: np.ndarray, spec: MeshSpec) -> int:
     """First clustered node from which the spacing grows by at most ``grading`` per element (and
-    no further than 40% of the contact width from the edge)."""
+    no further than ``ZONE_REACH`` of the half-width from the edge, so that a zone made for a
+    contact fits it unscaled and stays aligned with the edge advance)."""
     half = spec.elements // 2
     ok = np.flatnonzero(np.diff(d)[1:half] <= (spec.grading - 1.0) * d[1:half])
     first = int(ok[0]) + 1 if ok.size else half
-    return max(min(first, int(np.searchsorted(d, 0.4 * d[-1], side="right")) - 1), 1)
+    return max(min(first, int(np.searchsorted(d, 0.5 * ZONE_REACH * d[-1], side="right")) - 1), 1)
 
 
 def zone_pattern(alpha: float, spec: MeshSpec) -> tuple | None:
@@ -146,10 +149,10 @@ def graded_nodes(alpha: float, spec: MeshSpec, zone=None) -> np.ndarray:
         if zone is None:
             return z
     nodes, j = zone
-    if nodes[-1] > 0.4 * alpha:
+    if nodes[-1] > ZONE_REACH * alpha:
         # the contact shrank below the one the zone was made for: shrink the zone with it
         # (same nodes, so the count, and the residual, stay continuous in the edges)
-        nodes = nodes * (0.4 * alpha / nodes[-1])
+        nodes = nodes * (ZONE_REACH * alpha / nodes[-1])
     d = z - z[0]
     half = spec.elements // 2
     body = nodes[-1] + (d[j:half + 1] - d[j]) * (alpha - nodes[-1]) / (alpha - d[j])
