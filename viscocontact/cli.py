@@ -93,6 +93,9 @@ def _configure_solve(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--fields", action="store_true",
                         help="include pressure, displacement and gap on the check grid")
     parser.add_argument("--elements", type=int, default=None, help="elements per contact")
+    parser.add_argument("--explain", action="store_true",
+                        help="print the solve plan (what is computed, what is skipped and why) "
+                             "and exit without solving")
 
 
 def _run_solve(args: argparse.Namespace) -> int:
@@ -104,7 +107,12 @@ def _run_solve(args: argparse.Namespace) -> int:
     options = {}
     if args.elements is not None:
         options["discretization"] = Discretization(elements=args.elements)
-    result = ContactProblem.from_scene(scene, **options).solve(fields=args.fields)
+    problem = ContactProblem.from_scene(scene, **options)
+    if args.explain:
+        plan = problem.plan()
+        print(json.dumps(plan.to_dict(), ensure_ascii=False, indent=2) if args.json else plan)
+        return 0
+    result = problem.solve(fields=args.fields)
     if args.json:
         print(result.to_json(with_fields=args.fields))
     else:
@@ -366,6 +374,20 @@ def _run_study(args: argparse.Namespace) -> int:
     return 0 if load_study(files[0]).points["converged"].all() else 1
 
 
+# ---- bench --------------------------------------------------------------------------------------
+def _configure_bench(parser: argparse.ArgumentParser) -> None:
+    from .benchmarking import configure_parser
+
+    configure_parser(parser)
+
+
+def _run_bench(args: argparse.Namespace) -> int:
+    """Benchmark the nonlinear solvers and mesh sizes against the uniform-grid FFT peer."""
+    from .benchmarking import run
+
+    return run(args)
+
+
 # ---- the parser ---------------------------------------------------------------------------------
 Configure = Callable[[argparse.ArgumentParser], None]
 Run = Callable[[argparse.Namespace], int]
@@ -381,6 +403,7 @@ SUBCOMMANDS: dict[str, tuple[Configure, Run]] = {
     "plot": (_configure_plot, _run_plot),
     "study": (_configure_study, _run_study),
     "validate": (_configure_validate, _run_validate),
+    "bench": (_configure_bench, _run_bench),
 }
 
 

@@ -77,13 +77,17 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
 
     An elastic kernel (no dissipative branch) gets no zones: its edge fields are self-similar
     square-root fields, which eq. 4.22 with the calibrated fit already resolves, and its energy
-    terms are global (δU converges like the load, δL_P vanishes).
+    terms are global (δU converges like the load, δL_P vanishes). Neither does a kernel whose
+    memory lengths are all below ``SMALLEST_RESOLVED`` or above the period, without a finite
+    edge advance.
     """
     memory = [float(z) for z in getattr(kernel, "zetas", ())]
     if disc.edge_resolution is None or not memory:
         return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading)
     advance = [ell for ell in adhesion.resolved_lengths() if ell > 0]
-    lengths = [ell for ell in memory + advance if 0 < ell < TWO_PI]  # longer: no zones needed
+    # memory lengths below SMALLEST_RESOLVED are not resolved, longer than the period need no zone
+    lengths = ([ell for ell in memory if SMALLEST_RESOLVED <= ell < TWO_PI]
+               + [ell for ell in advance if ell < TWO_PI])
     smallest = None
     if lengths:
         smallest = max(disc.edge_resolution * min(lengths), SMALLEST_RESOLVED)
@@ -184,6 +188,11 @@ class ContactProblem:
         Edge residual tolerance in stress-intensity units.
     max_restarts : int
         Largest number of contact-set changes in one equilibrium solve.
+    kernel_tolerance : float or None
+        Memory branches whose relaxed or frozen limit changes the kernel by at most this much are
+        taken in that limit (no memory table; see
+        :func:`~viscocontact.kernels.prepared.branch_regimes`). ``None``: only outside
+        ``ζ_i ∈ [1e-12, 1e12]``.
     fallback : NonlinearSolver or None
         Taken from where ``solver`` stopped when it does not converge. The default, a bisection
         march that grows its step until the residual changes sign (thesis §4.5.4), follows an edge
@@ -202,6 +211,8 @@ class ContactProblem:
     discretization: Discretization = attrs.field(factory=Discretization)
     tolerances: Tolerances = attrs.field(factory=lambda: Tolerances(residual=1e-9))
     max_restarts: int = attrs.field(default=200, validator=int_range(1))
+    kernel_tolerance: float | None = attrs.field(
+        default=None, validator=attrs.validators.optional(in_range(0.0, 1e-2, lo_open=True)))
     fallback: NonlinearSolver | None = attrs.field(
         factory=lambda: Bisection(initial_step=2e-3, growth=1.5))
 
@@ -221,9 +232,20 @@ class ContactProblem:
 
     def prepare(self) -> Prepared:
         """Kernel tables for this rheology and ζ, the normalised profile and its m2."""
-        return Prepared(kernel=self.kernel.prepare(self.rheology, self.zeta),
+        if self.kernel_tolerance is None:
+            kernel = self.kernel.prepare(self.rheology, self.zeta)
+        else:
+            kernel = self.kernel.prepare(self.rheology, self.zeta, tolerance=self.kernel_tolerance)
+        return Prepared(kernel=kernel,
                         shape=NormalizedProfile.of(self.profile),
                         m2=float(self.profile.statistics().m2))
+
+    def plan(self, prepared: Prepared | None = None):
+        """What a solve of this problem will compute and what it skips
+        (:class:`~viscocontact.plan.SolvePlan`; ``viscocontact solve --explain`` prints it)."""
+        from .plan import solve_plan
+
+        return solve_plan(self, prepared or self.prepare())
 
     def solve(self, initial=None, *, fields: bool = False, prepared: Prepared | None = None,
               raise_on_failure: bool = False) -> ContactResult:

@@ -39,7 +39,7 @@ class GreenKernel(abc.ABC):
         """Number of modes after which ``|1 - S_m|`` is below 1e-16 (0: exactly the half-plane)."""
         return 0
 
-    def prepare(self, rheology, zeta: float):
+    def prepare(self, rheology, zeta: float, tolerance: float | None = None):
         """Tables for one rheology and dimensionless speed ``ζ = q0 V τ``.
 
         Parameters
@@ -48,7 +48,12 @@ class GreenKernel(abc.ABC):
             The viscoelastic material (its creep spectrum defines the memory branches).
         zeta : float
             ``ζ = q0·V·τ`` with τ the rheology's ``reference_time``; 0 gives the relaxed (E0) kernel.
+        tolerance : float, optional
+            Treat a memory branch as relaxed or frozen when that changes the kernel's
+            antiderivative by at most this much (see
+            :func:`~viscocontact.kernels.prepared.branch_regimes`); default: only outside
+            ``[1e-12, 1e12]``.
         """
         from .prepared import PreparedKernel
 
-        return PreparedKernel.build(self, rheology, zeta)
+        return PreparedKernel.build(self, rheology, zeta, tolerance)

@@ -56,7 +56,9 @@ class PreparedKernel:
     k_inf: float
 
     @classmethod
-    def build(cls, kernel, rheology, zeta: float) -> "PreparedKernel":
+    def build(cls, kernel, rheology, zeta: float, tolerance: float | None = None) -> "PreparedKernel":
+        """Tables for ``rheology`` at ``zeta``; ``tolerance`` (absolute, on the kernel's
+        antiderivative per unit branch weight) widens the limits of :func:`branch_regimes`."""
         zeta = float(zeta)
         if not np.isfinite(zeta) or zeta < 0:
             raise ValueError(f"zeta = {zeta!r} is not allowed: expected a finite real >= 0")
@@ -65,8 +67,9 @@ class PreparedKernel:
         k_inf = e0 * spec.instantaneous
         w_all = e0 * np.asarray(spec.weights, float)
         z_all = zeta * np.asarray(spec.times, float) / rheology.reference_time
-        inst = k_inf + float(np.sum(w_all[z_all < ZETA_RELAXED]))
-        active = (z_all >= ZETA_RELAXED) & (z_all <= ZETA_FROZEN)
+        regime = branch_regimes(z_all, tolerance)
+        inst = k_inf + float(np.sum(w_all[regime == RELAXED]))
+        active = regime == ACTIVE
         w, z = w_all[active], z_all[active]
         tables = tuple(MemoryTable(zi) for zi in z)
         corr, corr_v = None, None
@@ -139,6 +142,44 @@ class PreparedKernel:
         a = np.asarray(left, dtype=float)
         b = np.asarray(right, dtype=float)
         return element_integrals(self.antiderivative, collocation, a, b) + self.mean * (b - a)
+
+
+RELAXED, ACTIVE, FROZEN = "relaxed", "active", "frozen"
+_APERY = 1.2020569031595942          # ζ(3) = Σ 1/m³
+
+
+def relaxed_error_bound(memory_length):
+    """Bound on ``|(M_ζ[Φ](x) - M_ζ[Φ](0)) - (Φ(x) - Φ(0))|`` for ``ζ < 1``: the change of the
+    antiderivative when a branch is taken as relaxed. With ``Φ = -Cl2 = -Σ sin(mx)/m²`` and
+    ``|1 - 1/(1 - imζ)| <= min(mζ, 1)``: ``2[ζ Σ_{m<1/ζ} 1/m + Σ_{m>=1/ζ} 1/m²] <= 2ζ(2 + ln(1/ζ))``."""
+    z = np.asarray(memory_length, dtype=float)
+    with np.errstate(divide="ignore"):
+        return 2.0 * z * (2.0 + np.log(1.0 / z))
+
+
+def frozen_error_bound(memory_length):
+    """Bound on ``|M_ζ[Φ](x) - M_ζ[Φ](0)|`` for ``ζ > 1``: what a branch taken as frozen leaves
+    out (``|1/(1 - imζ)| <= 1/(mζ)``, so ``|M_ζ[Φ]| <= ζ(3)/ζ``)."""
+    return 2.0 * _APERY / np.asarray(memory_length, dtype=float)
+
+
+def branch_regimes(memory_lengths, tolerance: float | None = None) -> np.ndarray:
+    """How each creep branch enters the kernel: ``"relaxed"``, ``"active"`` or ``"frozen"``.
+
+    A branch of memory length ``ζ_i`` is relaxed below ``ZETA_RELAXED`` and frozen above
+    ``ZETA_FROZEN``. With a ``tolerance`` the band narrows to where the memory integral matters:
+    a branch is taken as relaxed (frozen) when that changes the antiderivative of the kernel, per
+    unit branch weight, by at most ``tolerance`` (:func:`relaxed_error_bound`,
+    :func:`frozen_error_bound`).
+    """
+    z = np.asarray(memory_lengths, dtype=float)
+    relaxed = z < ZETA_RELAXED
+    frozen = z > ZETA_FROZEN
+    if tolerance is not None:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            relaxed |= (z < 1.0) & (relaxed_error_bound(z) <= tolerance)
+            frozen |= (z > 1.0) & (frozen_error_bound(z) <= tolerance)
+    return np.where(relaxed, RELAXED, np.where(frozen, FROZEN, ACTIVE))
 
 
 def element_integrals(antiderivative, points, left, right) -> np.ndarray:

@@ -1,0 +1,128 @@
+"""The solve plan (``viscocontact solve --explain``) and the tolerance-driven dissipative band."""
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from viscocontact.adhesion import EnergyBalance
+from viscocontact.kernels import ConfinedLayer, HalfPlane
+from viscocontact.kernels.clausen import cl2
+from viscocontact.kernels.memory import MemoryTable
+from viscocontact.kernels.prepared import (ACTIVE, FROZEN, RELAXED, branch_regimes,
+                                           frozen_error_bound, relaxed_error_bound)
+from viscocontact.problem import ContactProblem
+from viscocontact.profiles import Sinusoid
+from viscocontact.rheology import Elastic, StandardLinearSolid
+from viscocontact.solvers import Newton
+
+X = np.linspace(-np.pi, np.pi, 4001)
+
+
+def _deviation_from_relaxed(zeta):
+    tab = MemoryTable(zeta)
+    return float(np.max(np.abs(tab.antiderivative(X) + cl2(X))))
+
+
+def _deviation_from_frozen(zeta):
+    return float(np.max(np.abs(MemoryTable(zeta).antiderivative(X))))
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.floats(-9.0, -1.0))
+def test_relaxed_bound_holds_for_the_tabulated_memory_integral(log_zeta):
+    zeta = 10.0**log_zeta
+    assert _deviation_from_relaxed(zeta) <= relaxed_error_bound(zeta)
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.floats(1.0, 9.0))
+def test_frozen_bound_holds_for_the_tabulated_memory_integral(log_zeta):
+    zeta = 10.0**log_zeta
+    assert _deviation_from_frozen(zeta) <= frozen_error_bound(zeta)
+
+
+def test_bounds_are_not_loose_by_orders_of_magnitude():
+    assert _deviation_from_relaxed(1e-4) > 0.05 * relaxed_error_bound(1e-4)
+    assert _deviation_from_frozen(1e4) > 0.05 * frozen_error_bound(1e4)
+
+
+@given(st.lists(st.floats(1e-15, 1e15), min_size=1, max_size=6),
+       st.one_of(st.none(), st.floats(1e-14, 1e-2)))
+def test_regimes_are_ordered_in_the_memory_length(lengths, tol):
+    z = np.sort(np.asarray(lengths))
+    order = {RELAXED: 0, ACTIVE: 1, FROZEN: 2}
+    ranks = [order[r] for r in branch_regimes(z, tol)]
+    assert ranks == sorted(ranks)
+    if tol is None:
+        assert list(branch_regimes([1e-13, 1e-6, 1e13])) == [RELAXED, ACTIVE, FROZEN]
+
+
+def test_a_tolerance_removes_the_memory_table_and_keeps_the_limit():
+    sls = StandardLinearSolid(beta=10.0)
+    strict = HalfPlane().prepare(sls, 1e-10)
+    loose = HalfPlane().prepare(sls, 1e-10, tolerance=1e-7)
+    assert len(strict.zetas) == 1 and len(loose.zetas) == 0
+    x = np.linspace(-3.0, 3.0, 101)
+    assert np.max(np.abs(strict.antiderivative(x) - loose.antiderivative(x))) <= 1e-7
+
+
+def _problem(**kw):
+    base = dict(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+                solver=Newton(), mean_pressure=0.1, zeta=1.0)
+    base.update(kw)
+    return ContactProblem(**base)
+
+
+def test_plan_of_an_adhesive_viscoelastic_half_plane():
+    plan = {s.stage: s for s in _problem(adhesion=EnergyBalance(gamma=1e-4)).plan().steps}
+    assert "1 memory table" in plan["kernel"].choice
+    assert plan["mean displacement"].choice.startswith("skipped")
+    assert plan["layer series"].choice == "none"
+    assert "edge zones" in plan["mesh"].choice and "no edge zones" not in plan["mesh"].choice
+    assert "bordered" in plan["edges"].choice
+    assert "only when asked" in plan["fields"].choice
+
+
+def test_plan_skips_what_an_elastic_adhesionless_scene_does_not_need():
+    plan = {s.stage: s for s in _problem(rheology=Elastic()).plan().steps}
+    assert plan["kernel"].choice.startswith("elastic")
+    assert "no edge zones" in plan["mesh"].choice
+    assert "no energy perturbations" in plan["edges"].reason
+
+
+def test_plan_of_a_layer_and_a_relaxed_branch():
+    layer = ConfinedLayer(thickness=0.5, poisson=0.4)
+    plan = {s.stage: s for s in _problem(kernel=layer, zeta=1e-11, kernel_tolerance=1e-6)
+            .plan().steps}
+    assert "E0" in plan["kernel"].choice and "relaxed" in plan["kernel"].reason
+    assert plan["mean displacement"].choice.startswith("constant kernel")
+    assert "modes" in plan["layer series"].choice
+    incompressible = {s.stage: s for s in _problem(kernel=ConfinedLayer(thickness=0.5)).plan().steps}
+    assert "ν = 0.5" in incompressible["mean displacement"].reason
+
+
+def test_kernel_tolerance_is_validated():
+    from viscocontact.errors import ValidationError
+
+    with pytest.raises(ValidationError, match="kernel_tolerance"):
+        _problem(kernel_tolerance=0.5)
+
+
+def test_cli_explain_prints_the_plan_without_solving(tmp_path, capsys):
+    from viscocontact.cli import main
+
+    scene = tmp_path / "s.toml"
+    scene.write_text('[profile]\nkind = "sinusoid"\namplitude = 0.1\n[rheology]\n'
+                     'kind = "standard-linear-solid"\nbeta = 10.0\n[load]\nmean_pressure = 0.1\n'
+                     '[sliding]\nzeta = 1.0\n', encoding="utf-8")
+    assert main(["solve", str(scene), "--explain"]) == 0
+    text = capsys.readouterr().out
+    for stage in ("kernel", "mean displacement", "layer series", "mesh", "edges", "fields"):
+        assert stage in text
+    assert "area" not in text                                   # no solve, no result
+    assert main(["solve", str(scene), "--explain", "--json"]) == 0
+    steps = json.loads(capsys.readouterr().out)
+    assert [s["stage"] for s in steps][:3] == ["kernel", "mean displacement", "layer series"]
