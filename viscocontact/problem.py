@@ -66,6 +66,9 @@ class Discretization:
 
 MIN_WIDTH = 1e-8
 MIN_GAP = 1e-8
+#: Residual evaluations allowed to one solver call of an approach step (a converging step takes
+#: 10-30; one that fails near a fold ran to 300 before the step was halved).
+APPROACH_BUDGET = 80
 #: Lengths below this (q0-scaled) are not resolved by the edge zones: a memory length ζτ_i/τ
 #: below it changes areas by O(ζ/α) only, and resolving it costs elements at every edge.
 SMALLEST_RESOLVED = 1e-6
@@ -343,8 +346,19 @@ class _Run:
         return np.array(out) if split else None
 
     # ---- equilibrium at one control value ---------------------------------------------------
-    def equilibrate(self, edges, control):
+    def equilibrate(self, edges, control, use_fallback: bool = True, budget: int | None = None):
+        """Equilibrium at one control value from ``edges`` (contact-set changes included).
+
+        ``use_fallback = False`` skips the fallback march when the primary solver stops, and
+        ``budget`` caps the residual evaluations of each solver call: the approach path uses both
+        for its trial steps, since a solve that fails near a fold costs hundreds of evaluations
+        while a halved step (and at the end :meth:`snap`) finds the jump anyway.
+        """
         p = self.problem
+        tolerances = p.tolerances
+        if budget is not None:
+            tolerances = attrs.evolve(tolerances, max_evaluations=min(budget,
+                                                                      tolerances.max_evaluations))
         edges = np.asarray(edges, dtype=float)
         fallback_first = False
         for _ in range(p.max_restarts):
@@ -359,15 +373,15 @@ class _Run:
             try:
                 if fallback_first and p.fallback is not None:
                     fallback_first = False
-                    res = p.fallback.solve(system, edges, p.tolerances)
+                    res = p.fallback.solve(system, edges, tolerances)
                 else:
-                    res = p.solver.solve(system, edges, p.tolerances)
-                if not res.converged and p.fallback is not None:
+                    res = p.solver.solve(system, edges, tolerances)
+                if not res.converged and p.fallback is not None and use_fallback:
                     self.iterations += res.iterations
                     self.events.append(f"{type(p.solver).__name__} stopped ({res.status.value}); "
                                        f"{type(p.fallback).__name__} takes over")
                     start = res.x if np.all(np.isfinite(res.x)) else edges
-                    res = p.fallback.solve(system, start, p.tolerances)
+                    res = p.fallback.solve(system, start, tolerances)
             except TopologyChange as change:
                 self.evaluations += system.evaluations
                 self.events.append(change.reason)
@@ -532,7 +546,10 @@ class _Run:
                 d_next = d_prev + step
             else:
                 d_next = d_prev + np.clip(d_end - d_prev, -step, step)
-            trial = self.equilibrate(state[1], {"penetration": d_next})
+            # the fallback march only once the step is small enough for a fold to be likely
+            trial = self.equilibrate(state[1], {"penetration": d_next},
+                                     use_fallback=step < self.disc.path_step / 16,
+                                     budget=APPROACH_BUDGET)
             if trial[0] == "converged":
                 state, d_prev = trial, d_next
                 step = min(step * 1.5, self.disc.path_step)
