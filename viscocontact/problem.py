@@ -85,9 +85,9 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     edge advance.
     """
     memory = [float(z) for z in getattr(kernel, "zetas", ())]
-    if disc.edge_resolution is None or not memory:
-        return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading)
     advance = [ell for ell in adhesion.resolved_lengths() if ell > 0]
+    if disc.edge_resolution is None or not (memory or advance):
+        return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading)
     # memory lengths below SMALLEST_RESOLVED are not resolved, longer than the period need no zone
     lengths = ([ell for ell in memory if SMALLEST_RESOLVED <= ell < TWO_PI]
                + [ell for ell in advance if ell < TWO_PI])
@@ -728,7 +728,8 @@ class _Run:
         sigma = np.fft.irfft(sig_h * n, n)
         r = shape.heights(x)
         slopes = shape.profile.slopes(x)
-        mu = float(np.mean(sigma * slopes) / pm) if pm else np.nan
+        mu = (float(np.mean(sigma * slopes) / pm)
+              if abs(pm) > 1e-12 * float(np.mean(np.abs(sigma))) else np.nan)
         sqrt_m2 = np.sqrt(self.prep.m2)
         adhesive = self.problem.adhesion.work_of_adhesion > 0
         ok = adhesive or bool(np.all(sigma <= 1e-9))

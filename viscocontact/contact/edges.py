@@ -32,7 +32,7 @@ import functools
 import numpy as np
 
 from .fields import FieldSolution, NormalizedProfile, stress_intensity
-from .mesh import ALIGN_MAX, ZONE_CAP, Mesh, MeshSpec, build_mesh
+from .mesh import ZONE_CAP, Mesh, MeshSpec, build_mesh
 from ..kernels.prepared import element_integrals
 
 
@@ -100,6 +100,10 @@ def _antisymmetric_block(even_antiderivative, row_left, row_right, col_left, col
     """
     return element_integrals(even_antiderivative, 0.5 * (row_left + row_right), col_left,
                              col_right)
+
+
+#: Fewest edge elements in an advance for the bordered enlarged mesh (an aligned zone has 10).
+MIN_BORDER = 8
 
 
 def outward(edges: np.ndarray, i: int, dx: float) -> np.ndarray:
@@ -226,10 +230,9 @@ class EdgeContext:
     def energy_release(self, i: int, dx: float) -> tuple[float, float]:
         """``(δŨ/δX̃, δL̃_P/δX̃)`` for an outward advance ``dx`` of edge ``i`` (stored sign).
 
-        When the edge zone is aligned with ``dx`` (the equal elements at the edge divide it, see
-        :func:`~viscocontact.contact.mesh.zone_pattern`) the enlarged contact is meshed as the
-        base mesh bordered by those equal elements (:meth:`bordered_release`); otherwise it is
-        re-meshed (:meth:`enlarged`).
+        With an edge zone the enlarged contact is meshed as the base mesh bordered by new
+        elements over ``dx`` (:meth:`bordered_release`); otherwise (``dx`` shorter than
+        ``MIN_BORDER`` edge elements) it is re-meshed (:meth:`enlarged`).
         """
         bordered = self.bordered_release(i, dx)
         if bordered is not None:
@@ -240,17 +243,35 @@ class EdgeContext:
         return d_u / dx, d_lp / dx
 
     def _new_elements(self, i: int, dx: float):
-        """The equal elements that extend the base mesh over ``dx`` outside edge ``i``, or None
-        when the edge element does not divide ``dx`` (no aligned zone at that edge)."""
+        """``(left, right)`` of the elements that extend the base mesh over ``dx`` outside edge
+        ``i``, or None when ``dx`` is less than ``MIN_BORDER`` edge elements (the old edge's
+        singular field, now inside the contact, would be left unresolved).
+
+        When the edge element ``h`` divides ``dx`` (a zone aligned with the advance), ``dx/h``
+        equal elements; otherwise elements that grow by the zone's grading from ``h`` at both
+        ends of the advance towards its middle, so that the new edge is meshed like a zone and
+        the old one keeps its neighbours' size.
+        """
         mesh = self.mesh
         sl = mesh.slice(i // 2)
         first = sl.start if i % 2 == 0 else sl.stop - 1
         h = float(mesh.width[first])
         n = int(round(dx / h))
-        if n < 1 or n > 4 * ALIGN_MAX or abs(n * h - dx) > 1e-9 * dx:
+        if dx < MIN_BORDER * h * (1 - 1e-9):
             return None
+        if abs(n * h - dx) <= 1e-9 * dx:
+            sizes = np.full(n, h)
+        else:
+            g = self.spec.grading
+            half = [h]
+            while sum(half) + half[-1] * g <= 0.5 * dx:
+                half.append(half[-1] * g)
+            sizes = np.concatenate([half, half[::-1]])
+            sizes *= dx / sizes.sum()
+        offsets = np.concatenate([[0.0], np.cumsum(sizes)])
+        offsets[-1] = dx
         x = float(mesh.edges[i])
-        nodes = x - h * np.arange(n, -1, -1) if i % 2 == 0 else x + h * np.arange(n + 1)
+        nodes = x - dx + offsets if i % 2 == 0 else x + offsets
         nodes[-1 if i % 2 == 0 else 0] = x
         return nodes[:-1], nodes[1:]
 
@@ -263,16 +284,16 @@ class EdgeContext:
         return self._aprod
 
     def bordered_release(self, i: int, dx: float):
-        """``(δŨ/δX̃, δL̃_P/δX̃)`` on the base mesh bordered by equal elements over ``dx``.
+        """``(δŨ/δX̃, δL̃_P/δX̃)`` on the base mesh bordered by new elements over ``dx``.
 
-        The enlarged contact keeps every base element and gains the ``n`` elements of the edge
-        zone's size that cover ``[X - δX, X]`` (left edge) or ``[X, X + δX]`` (right edge); near the
-        new edge it is then meshed as a fresh zone would be. The bordered system
+        The enlarged contact keeps every base element and gains the ``n`` elements of
+        :meth:`_new_elements` that cover ``[X - δX, X]`` (left edge) or ``[X, X + δX]`` (right
+        edge); near the new edge it is then meshed as a fresh zone would be. The bordered system
         ``[[B, c], [r, d]]`` is solved through its ``n x n`` Schur complement with the base
         factorisation, and only the ``2n`` new rows and columns of the influence and
         antisymmetric matrices are evaluated. Because the two fields share all base elements, no
-        re-meshing noise of the contact interior enters ``U⁺ - U⁻`` or ``δL_P``. None when the
-        zone is not aligned with ``dx``.
+        re-meshing noise of the contact interior enters ``U⁺ - U⁻`` or ``δL_P``. None when ``dx``
+        is shorter than ``MIN_BORDER`` edge elements (no edge zone).
         """
         new = self._new_elements(i, dx)
         if new is None:

@@ -129,8 +129,13 @@ def friction(mesh: Mesh, sigma: np.ndarray, shape: NormalizedProfile, mean_press
 
     ``μ = -(1/(λ0 p∞)) ∫ p u' dx`` (eq. 4.16 with the sign that makes it the dissipated power over
     V·load; see docs/kernels.md) ``= (1/(2π p̃∞)) Σ_q σ̃_q [q0 r(b_q) - q0 r(a_q)]`` exactly for
-    piecewise-constant stress, since ``u' = r'`` in contact.
+    piecewise-constant stress, since ``u' = r'`` in contact. NaN when the mean pressure is zero
+    to round-off (a contact held by adhesion at zero load has no friction coefficient).
     """
     prof = shape.profile
     work = sigma @ (prof.heights(mesh.right) - prof.heights(mesh.left))
-    return float(work / (2 * np.pi * mean_pressure)) if mean_pressure != 0 else float("nan")
+    # a mean pressure at the round-off of the load sum carries no friction coefficient
+    load_scale = float(np.sum(np.abs(mesh.width * sigma))) / (2 * np.pi)
+    if not abs(mean_pressure) > 1e-12 * load_scale:
+        return float("nan")
+    return float(work / (2 * np.pi * mean_pressure))
