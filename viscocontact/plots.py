@@ -5,6 +5,11 @@
   confidence band;
 * a cycle: p̃∞ and Ã against Δ̃ along each approach-retraction path (Fig. 4.8), approach solid,
   retraction dashed, detachment marked ×; with several ζ also the toughness T̃ against ζ (Fig. 4.9).
+
+Layouts of the thesis's figures for the ``examples/fig_4_*.py`` scripts: :func:`plot_panels`
+(sweep panels side by side, several studies per panel, e.g. a δX family; Figs. 4.7, 4.10),
+:func:`plot_cycles_panels` (Fig. 4.8), :func:`plot_toughness` (Fig. 4.9) and
+:func:`plot_solution_fields` (pressure and gap of single solutions).
 """
 from __future__ import annotations
 
@@ -169,3 +174,247 @@ def plot_cycle(data, out: Path, prefix: str) -> list[Path]:
 def _pressure_at(points, penetration: float) -> float:
     sel = (points["target"] == penetration) & points["converged"]
     return float(points["mean_pressure"][sel][0]) if sel.any() else np.nan
+
+
+# ---- thesis figure layouts (Figs. 4.7-4.10 and a single solution) -------------------------------
+def draw_sweep(ax, data, quantity: str, *, label: str = "", colors=None, marker: str = "o",
+               variants=None) -> None:
+    """Draw one sweep's ``quantity`` against ζ on ``ax`` the thesis's way.
+
+    Adhesive curves solid, adhesionless dashed, one colour per load (``colors[i]`` for the i-th
+    load); with several realizations the mean and its confidence band. Failed points are gaps.
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    data : StudyData
+        A loaded sweep.
+    quantity : str
+        A column of :meth:`StudyData.table`, e.g. ``"area"`` or ``"reduced_friction"``.
+    label : str
+        Appended to each curve's legend entry (e.g. ``"δX = 1e-4"``).
+    colors : sequence of colours, optional
+        One per load (default: matplotlib's cycle).
+    marker : str
+    variants : sequence of str, optional
+        Which of ``"adhesive"``/``"adhesionless"`` to draw (default: all in the file).
+    """
+    plt = _pyplot()
+    axes = data.axes()
+    zetas = np.asarray(axes["zeta"])
+    colors = colors or plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    control = r"$\tilde p_\infty$" if data.study.control == "mean_pressure" else r"$\tilde\Delta$"
+    band = data.band(quantity)
+    several = len(axes["seed"]) > 1
+    for iv, variant in enumerate(axes["variant"]):
+        if variants is not None and variant not in variants:
+            continue
+        style = "-" if variant == "adhesive" else "--"
+        for il, load in enumerate(axes["load"]):
+            color = colors[il % len(colors)]
+            text = f"{variant}, {control} = {load:g}"
+            if label and variant == "adhesive":
+                text += f", {label}"
+            ax.plot(zetas, band.mean[iv, il], style, marker=marker, ms=3, color=color,
+                    label=text, mfc="none" if variant != "adhesive" else color)
+            if several:
+                ax.fill_between(zetas, band.lower[iv, il], band.upper[iv, il], color=color,
+                                alpha=0.15, lw=0)
+    _xscale(ax, zetas)
+    ax.set_xlabel(ZETA_LABEL)
+    ax.grid(alpha=0.3)
+
+
+def plot_panels(panels, path, *, title: str | None = None, width: float = 5.2,
+                height: float = 4.0) -> Path:
+    """A row of sweep panels in one PNG (the layout of thesis Figs. 4.7 and 4.10).
+
+    Parameters
+    ----------
+    panels : sequence of dict
+        One per panel: ``title``, ``quantity``, ``ylabel`` and ``curves``, a list of dicts with
+        ``data`` (a loaded sweep) and optionally ``label``, ``colors``, ``marker``, ``variants``
+        (the keywords of :func:`draw_sweep`).
+    path : str or Path
+        The PNG written.
+    title : str, optional
+        Figure title.
+
+    Returns
+    -------
+    Path
+    """
+    plt = _pyplot()
+    fig, axs = plt.subplots(1, len(panels), figsize=(width * len(panels), height), squeeze=False)
+    for ax, panel in zip(axs[0], panels):
+        for curve in panel["curves"]:
+            draw_sweep(ax, curve["data"], panel["quantity"],
+                       **{k: v for k, v in curve.items() if k != "data"})
+        ax.set_ylabel(panel["ylabel"])
+        ax.set_title(panel.get("title", ""), fontsize=10)
+        ax.legend(fontsize=6.5)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def plot_cycles_panels(panels, path, *, title: str | None = None) -> Path:
+    """Approach-retraction loops Ã against Δ̃ side by side (the layout of thesis Fig. 4.8).
+
+    Parameters
+    ----------
+    panels : sequence of dict
+        One per panel: ``title`` and ``curves``, a list of dicts with ``data`` (a loaded cycle
+        study) and optionally ``zetas`` and ``gammas`` (draw only the cycles with these ζ, γ̃).
+        Approach solid, retraction dashed, detachment marked ×.
+    path : str or Path
+    title : str, optional
+
+    Returns
+    -------
+    Path
+    """
+    plt = _pyplot()
+    fig, axs = plt.subplots(1, len(panels), figsize=(5.2 * len(panels), 4.0), squeeze=False)
+    for ax, panel in zip(axs[0], panels):
+        i = 0
+        for curve in panel["curves"]:
+            for cyc in curve["data"].cycles():
+                if "zetas" in curve and not np.isclose(curve["zetas"], cyc["zeta"]).any():
+                    continue
+                if "gammas" in curve and not np.isclose(curve["gammas"], cyc["gamma"],
+                                                        rtol=1e-9, atol=0).any():
+                    continue
+                pts = cyc["points"]
+                if not len(pts["chain"]) or not pts["converged"].any():
+                    continue
+                color = f"C{i % 10}"
+                i += 1
+                approach, retract = _branches(pts)
+                label = f"ζ = {cyc['zeta']:g}, γ̃ = {cyc['gamma']:.3g}"
+                ax.plot(pts["target"][approach], pts["area"][approach], "-o", ms=3, color=color,
+                        label=label)
+                ax.plot(pts["target"][retract], pts["area"][retract], "--s", ms=3, color=color,
+                        mfc="none")
+                m = cyc["metrics"]
+                if m is not None and m.detached:
+                    sel = (pts["converged"] & (pts["phase"] == "retract")
+                           & (pts["target"] == m.detachment_penetration))
+                    if sel.any():
+                        ax.plot([m.detachment_penetration], [pts["area"][sel][0]], "x",
+                                color=color, ms=8)
+        ax.set_xlabel(r"penetration $\tilde\Delta$")
+        ax.set_ylabel(r"contact area $\tilde A$")
+        ax.set_title(panel.get("title", ""), fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def _branches(pts):
+    """Row indices of the converged approach (ascending Δ̃) and of the retraction points in
+    contact (from the turning point, descending Δ̃) of one cycle."""
+    shown = pts["converged"]
+    approach = np.flatnonzero(shown & (pts["phase"] == "approach"))
+    approach = approach[np.argsort(pts["target"][approach], kind="stable")]
+    contact = (pts["n_contacts"] > 0) | pts["full_contact"]
+    retract = np.flatnonzero(shown & contact & (pts["phase"] == "retract"))
+    retract = retract[np.argsort(-pts["target"][retract], kind="stable")]
+    return approach, np.r_[approach[-1:], retract].astype(int)
+
+
+def plot_toughness(curves, path, *, title: str | None = None) -> Path:
+    """Contact toughness T̃ (eq. 4.57) against ζ (the layout of thesis Fig. 4.9).
+
+    Parameters
+    ----------
+    curves : sequence of dict
+        ``data`` (a loaded cycle study with several ζ) and ``label``; each γ̃ of the study is one
+        curve, the mean over its seeds with the confidence band when there are several.
+    path : str or Path
+    title : str, optional
+
+    Returns
+    -------
+    Path
+    """
+    from .studies.realizations import confidence_band
+
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(5.6, 4.0))
+    for curve in curves:
+        metrics = curve["data"].metrics()
+        band = confidence_band(metrics["toughness"], axis=2)
+        for ig, gamma in enumerate(metrics["gamma"]):
+            if np.isfinite(gamma) and gamma == 0.0:
+                continue
+            label = curve.get("label", "") + (f" γ̃ = {gamma:.3g}" if np.isfinite(gamma) else "")
+            ax.plot(metrics["zeta"], band.mean[:, ig], "-o", ms=3, label=label.strip())
+            if metrics["toughness"].shape[2] > 1:
+                ax.fill_between(metrics["zeta"], band.lower[:, ig], band.upper[:, ig], alpha=0.2,
+                                lw=0)
+        _xscale(ax, metrics["zeta"])
+    values = np.concatenate([line.get_ydata() for line in ax.get_lines()] or [np.zeros(0)])
+    values = values[np.isfinite(values)]
+    if values.size and values.min() > 0 and values.max() > 100 * values.min():
+        ax.set_yscale("log")                     # T̃ spans decades between ζ and profiles
+    ax.set_xlabel(ZETA_LABEL)
+    ax.set_ylabel("contact toughness T̃ (eq. 4.57)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    if title:
+        ax.set_title(title, fontsize=10)
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def plot_solution_fields(solutions, path, *, title: str | None = None) -> Path:
+    """Pressure and gap of single solutions against x̃ (two stacked panels).
+
+    Parameters
+    ----------
+    solutions : sequence of dict
+        ``fields`` (a mapping with ``x``, ``pressure`` and ``gap`` arrays, as
+        ``ContactResult.fields`` or ``StudyData.fields(row)``), ``label`` and optionally
+        ``style`` (a matplotlib format string).
+    path : str or Path
+    title : str, optional
+
+    Returns
+    -------
+    Path
+    """
+    plt = _pyplot()
+    fig, (ax_p, ax_g) = plt.subplots(2, 1, figsize=(7.0, 5.6), sharex=True)
+    for sol in solutions:
+        f = sol["fields"]
+        style = sol.get("style", "-")
+        ax_p.plot(f["x"], f["pressure"], style, lw=1.0, label=sol["label"])
+        ax_g.plot(f["x"], f["gap"], style, lw=1.0, label=sol["label"])
+    ax_p.set_ylabel("pressure p̃ (compressive > 0)")
+    ax_g.set_ylabel("gap g̃")
+    ax_g.set_xlabel("x̃ = q0 x (material moves towards −x)")
+    for ax in (ax_p, ax_g):
+        ax.grid(alpha=0.3)
+        ax.axhline(0.0, color="k", lw=0.5)
+    ax_p.legend(fontsize=7)
+    if title:
+        ax_p.set_title(title, fontsize=10)
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
