@@ -30,11 +30,9 @@ import importlib.util
 import io
 import math
 import os
-import signal
 import statistics
 import sys
 import tempfile
-import threading
 import time
 from pathlib import Path
 
@@ -116,24 +114,11 @@ class BudgetExceeded(BaseException):
     """A solve ran past its time budget (BaseException: no solver swallows it)."""
 
 
-@contextlib.contextmanager
-def time_limit(seconds: float):
+def time_limit(seconds):
     """Raise :class:`BudgetExceeded` after ``seconds`` of wall time (main thread only)."""
-    if (not seconds or not hasattr(signal, "setitimer")
-            or threading.current_thread() is not threading.main_thread()):
-        yield
-        return
+    from ._alarm import time_limit as limit
 
-    def alarm(signum, frame):
-        raise BudgetExceeded(f"over the {seconds:g} s budget")
-
-    previous = signal.signal(signal.SIGALRM, alarm)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+    return limit(seconds, lambda: BudgetExceeded(f"over the {seconds:g} s budget"))
 
 
 def _solver(name: str):

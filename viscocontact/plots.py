@@ -29,6 +29,15 @@ def _pyplot():
     return plt
 
 
+def _save(plt, fig, path, dpi: int = 90) -> Path:
+    """Lay out, write and close ``fig``; the path written."""
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+    return path
+
+
 def plot_study(study, out=None, prefix: str | None = None) -> list[Path]:
     """Draw a study file (a path or a loaded :class:`~viscocontact.studies.StudyData`).
 
@@ -255,11 +264,7 @@ def plot_panels(panels, path, *, title: str | None = None, width: float = 5.2,
         ax.legend(fontsize=6.5)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    path = Path(path)
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(plt, fig, path)
 
 
 def plot_cycles_panels(panels, path, *, title: str | None = None) -> Path:
@@ -314,11 +319,7 @@ def plot_cycles_panels(panels, path, *, title: str | None = None) -> Path:
         ax.legend(fontsize=7)
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    path = Path(path)
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(plt, fig, path)
 
 
 def _branches(pts):
@@ -374,11 +375,7 @@ def plot_toughness(curves, path, *, title: str | None = None) -> Path:
     ax.legend(fontsize=7)
     if title:
         ax.set_title(title, fontsize=10)
-    fig.tight_layout()
-    path = Path(path)
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(plt, fig, path)
 
 
 def plot_solution_fields(solutions, path, *, title: str | None = None) -> Path:
@@ -413,8 +410,4 @@ def plot_solution_fields(solutions, path, *, title: str | None = None) -> Path:
     ax_p.legend(fontsize=7)
     if title:
         ax_p.set_title(title, fontsize=10)
-    fig.tight_layout()
-    path = Path(path)
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(plt, fig, path)

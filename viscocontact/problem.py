@@ -361,6 +361,7 @@ class _Run:
                                                                       tolerances.max_evaluations))
         edges = np.asarray(edges, dtype=float)
         fallback_first = False
+        converged_before_births: list[np.ndarray] = []
         for _ in range(p.max_restarts):
             if edges.size == 0:
                 born = self.births_without_contact(control)
@@ -408,7 +409,16 @@ class _Run:
             fields, ctx, r = system.evaluate(x)
             xs, gap = self.gap_outside(fields)
             regions = negative_regions(xs, gap, 1e-9)
+            if regions and any(len(x) == len(y) and np.allclose(x, y, rtol=0, atol=1e-7)
+                               for y in converged_before_births):
+                # the same equilibrium again: the contacts born from it last time vanished
+                # (detached or turned inside out) and would be born again, endlessly
+                return ("not_converged", x, fields, ctx, float(np.max(np.abs(r))),
+                        "contact set cycles: contacts born where the gap is negative on the "
+                        f"check grid ({len(regions)} region(s)) detach again; a finer check grid "
+                        "(Discretization.check_points) or mesh may settle it")
             if regions:
+                converged_before_births.append(x.copy())
                 new = [v for (a, b, _) in regions for v in (a, b)]
                 merged, _, _, full = repair(np.concatenate([x, new]), MIN_WIDTH, MIN_GAP)
                 self.events.append(f"{len(regions)} contact(s) born")
@@ -430,7 +440,7 @@ class _Run:
         system = _EdgeSystem(self, control, edges)
         self.n_edges = len(edges)
         try:
-            res = self.problem.fallback.solve(system, edges, self.problem.tolerances)
+            self.problem.fallback.solve(system, edges, self.problem.tolerances)
         except TopologyChange as change:
             self.evaluations += system.evaluations
             return change.full_contact

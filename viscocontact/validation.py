@@ -26,14 +26,11 @@ follow the load upwards, each continued from the previous contact set.
 from __future__ import annotations
 
 import argparse
-import contextlib
 import math
 import multiprocessing
 import os
-import signal
 import sys
 import tempfile
-import threading
 import time
 from concurrent.futures import Future, ProcessPoolExecutor
 from pathlib import Path
@@ -99,28 +96,15 @@ class SolveTimeout(BaseException):
     """A solve ran past the plan's time limit (a BaseException, so no solver swallows it)."""
 
 
-@contextlib.contextmanager
 def time_limit(seconds):
     """Raise :class:`SolveTimeout` in the block after ``seconds`` of wall time.
 
     Uses ``SIGALRM``, so it only acts in the main thread of a process (the pool's workers and
     the serial runner); elsewhere, or without a limit, the block runs unbounded.
     """
-    if (not seconds or not hasattr(signal, "setitimer")
-            or threading.current_thread() is not threading.main_thread()):
-        yield
-        return
+    from ._alarm import time_limit as limit
 
-    def alarm(signum, frame):
-        raise SolveTimeout(f"time limit of {seconds:.0f} s reached")
-
-    previous = signal.signal(signal.SIGALRM, alarm)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+    return limit(seconds, lambda: SolveTimeout(f"time limit of {seconds:.0f} s reached"))
 
 
 def _profile(seed):

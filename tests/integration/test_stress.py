@@ -366,17 +366,16 @@ def test_more_than_100_contacts():
 
 @pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason=(
-    "defect: with the default 2048-point check grid two barely penetrating peaks of the comb "
-    "(x ≈ -2.992 and 3.286, newborn width ~1e-3) are born by the gap check, turned inside out "
-    "by the next edge step (width -5e-5), detached by topology.repair, and born again: the "
-    "contact set cycles until max_restarts (200 by default, ~4 s per cycle: an apparent hang); "
-    "the same scene converges with check_points=16384"))
+    "limitation: births are found on the check grid (2048 points by default, 16 per peak of the "
+    "comb), which misses contacts narrower than its spacing: the solve converges with 96 "
+    "contacts where check_points=16384 finds 121 (and before session 3's fixes the barely "
+    "touching peaks were born and detached in a loop until max_restarts)"))
 def test_more_than_100_contacts_default_check_grid():
     prob = ContactProblem(profile=_comb(), rheology=Elastic(), solver=Newton(),
-                          mean_pressure=0.05, discretization=Discretization(elements=8),
-                          max_restarts=6)
-    r = _solve(prob)              # today: a loud failure ("contact set still changing ...")
+                          mean_pressure=0.05, discretization=Discretization(elements=8))
+    r = _solve(prob)
     assert r.converged, r.message
+    assert r.n_contacts > 100
 
 
 # ---- nearly touching contacts that merge -------------------------------------------------------
