@@ -78,11 +78,12 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     """The mesh of a problem: eq. 4.22 plus edge zones down to ``edge_resolution`` times the
     smallest physical length (memory lengths of the dissipative branches, adhesion lengths).
 
-    An elastic kernel (no dissipative branch) gets no zones: its edge fields are self-similar
-    square-root fields, which eq. 4.22 with the calibrated fit already resolves, and its energy
-    terms are global (δU converges like the load, δL_P vanishes). Neither does a kernel whose
-    memory lengths are all below ``SMALLEST_RESOLVED`` or above the period, without a finite
-    edge advance.
+    Without a finite edge advance, an elastic kernel (no dissipative branch) gets no zones: its
+    edge fields are self-similar square-root fields, which eq. 4.22 with the calibrated fit
+    already resolves. Neither does a kernel whose memory lengths are all below
+    ``SMALLEST_RESOLVED`` or above the period. A finite advance δX always gets zones aligned with
+    it, so that the enlarged contact of the energy balance is the bordered base mesh
+    (:meth:`~viscocontact.contact.edges.EdgeContext.bordered_release`).
     """
     memory = [float(z) for z in getattr(kernel, "zetas", ())]
     advance = [ell for ell in adhesion.resolved_lengths() if ell > 0]
