@@ -103,7 +103,10 @@ def _mesh_step(problem, spec, kernel) -> PlanStep:
             why = (f"memory length(s) below {SMALLEST_RESOLVED:g} (an O(ζ) effect) or beyond the "
                    "period, and no finite edge advance")
         return PlanStep(stage="mesh", choice=base + ", no edge zones", reason=why)
-    aligned = " aligned with δX" if spec.advance else ""
+    from .contact.mesh import ALIGN_MAX
+
+    aligned = (" aligned with δX" if spec.advance and spec.advance <= ALIGN_MAX * spec.smallest
+               else "")
     return PlanStep(stage="mesh",
                     choice=f"{base} + edge zones from h0 = {spec.smallest:.3g}{aligned}, "
                            f"grading {spec.grading:g}",

@@ -32,7 +32,7 @@ import functools
 import numpy as np
 
 from .fields import FieldSolution, NormalizedProfile, stress_intensity
-from .mesh import ZONE_CAP, Mesh, MeshSpec, build_mesh
+from .mesh import ALIGN_MAX, ZONE_CAP, Mesh, MeshSpec, build_mesh
 from ..kernels.prepared import element_integrals
 
 
@@ -247,10 +247,10 @@ class EdgeContext:
         ``i``, or None when ``dx`` is less than ``MIN_BORDER`` edge elements (the old edge's
         singular field, now inside the contact, would be left unresolved).
 
-        When the edge element ``h`` divides ``dx`` (a zone aligned with the advance), ``dx/h``
-        equal elements; otherwise elements that grow by the zone's grading from ``h`` at both
-        ends of the advance towards its middle, so that the new edge is meshed like a zone and
-        the old one keeps its neighbours' size.
+        When the edge element ``h`` divides ``dx`` into at most ``ALIGN_MAX`` parts (a zone
+        aligned with the advance), ``dx/h`` equal elements; otherwise elements that grow by the
+        zone's grading from ``h`` at both ends of the advance towards its middle, so that the new
+        edge is meshed like a zone and the old one keeps its neighbours' size.
         """
         mesh = self.mesh
         sl = mesh.slice(i // 2)
@@ -259,7 +259,7 @@ class EdgeContext:
         n = int(round(dx / h))
         if dx < MIN_BORDER * h * (1 - 1e-9):
             return None
-        if abs(n * h - dx) <= 1e-9 * dx:
+        if n <= ALIGN_MAX and abs(n * h - dx) <= 1e-9 * dx:
             sizes = np.full(n, h)
         else:
             g = self.spec.grading

@@ -1,0 +1,84 @@
+"""The bordered enlarged mesh of the finite-δX energy balance (``EdgeContext.bordered_release``)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from viscocontact.contact.edges import MIN_BORDER, EdgeContext
+from viscocontact.contact.fields import NormalizedProfile, solve_fields
+from viscocontact.contact.mesh import ALIGN_MAX, MeshSpec, build_mesh, zone_patterns
+from viscocontact.kernels import HalfPlane
+from viscocontact.profiles import Sinusoid
+from viscocontact.rheology import Elastic, StandardLinearSolid
+
+SHAPE = NormalizedProfile.of(Sinusoid(amplitude=0.1))
+
+
+def _context(edges, zeta=1e-2, smallest=1e-5, advance=1e-4, elements=64, rheology=None):
+    pk = HalfPlane().prepare(rheology or StandardLinearSolid(beta=10.0), zeta)
+    spec = MeshSpec(elements=elements, grading=1.15, smallest=smallest, advance=advance)
+    edges = np.asarray(edges, dtype=float)
+    zones = zone_patterns(edges, spec)
+    mesh = build_mesh(edges, spec, zones)
+    return EdgeContext(solve_fields(mesh, pk, SHAPE, penetration=0.3), pk, SHAPE, spec, 0.1,
+                       zones)
+
+
+def test_an_aligned_zone_borders_with_its_equal_elements():
+    ctx = _context([-0.9, 1.0])
+    left, right = ctx._new_elements(1, 1e-4)
+    assert len(left) == 10 and np.allclose(right - left, 1e-5, rtol=1e-9)
+    assert left[0] == ctx.mesh.edges[1] and right[-1] == pytest.approx(ctx.mesh.edges[1] + 1e-4)
+
+
+def test_a_long_advance_is_graded_not_thousands_of_equal_elements():
+    """δX = 1e4 edge elements: graded from both ends (the equal split once hung the solver)."""
+    ctx = _context([-0.9, 1.0], smallest=1e-6, advance=1e-2)
+    left, right = ctx._new_elements(0, 1e-2)
+    sizes = right - left
+    assert len(sizes) < 200                   # 94: 47 from each end at ratio 1.15
+    assert sizes.sum() == pytest.approx(1e-2, rel=1e-12)
+    assert right[-1] == ctx.mesh.edges[0]
+    assert np.all(np.isfinite(ctx.bordered_release(0, 1e-2)))
+
+
+def test_an_advance_of_a_few_edge_elements_is_re_meshed():
+    ctx = _context([-0.9, 1.0], smallest=None, advance=None)      # no zones: coarse edge
+    h = ctx.mesh.width[0]
+    assert ctx._new_elements(0, 0.5 * MIN_BORDER * h) is None
+    assert ctx.bordered_release(0, 0.5 * MIN_BORDER * h) is None
+
+
+@settings(max_examples=8, deadline=None)
+@given(st.floats(0.4, 1.5), st.floats(0.4, 1.5), st.sampled_from([1e-3, 1e-2, 1.0]))
+def test_bordered_terms_are_converged_in_the_clustered_mesh(left, right, zeta):
+    """The bordered energy terms change by less than 2e-3 (of |δŨ| + |δL̃_P|, or of 1e-3 for an
+    edge with almost no energy release: the terms are O(0.05-1) here) from 48 to 96 clustered
+    elements: the zone resolves the edge, and no re-meshing noise enters."""
+    coarse, fine = (_context([-left, right], zeta=zeta, elements=n) for n in (48, 96))
+    for i in (0, 1):
+        a, b = np.array(coarse.bordered_release(i, 1e-4)), np.array(fine.bordered_release(i, 1e-4))
+        assert np.all(np.abs(a - b) <= 2e-3 * max(np.sum(np.abs(b)), 1e-3))
+
+
+def test_the_re_meshed_contact_converges_towards_the_bordered_one():
+    """Re-meshing the enlarged contact moves its interior nodes by O(δX): its energy difference
+    carries noise that shrinks with the mesh, towards the bordered value."""
+    gaps = []
+    for n in (32, 64, 128):
+        ctx = _context([-0.9, 1.0], zeta=1e-2, elements=n)
+        after = ctx.enlarged(0, 1e-4)
+        du_r = (ctx.stored_energy(after) - ctx.stored_energy()) / 1e-4
+        gaps.append(abs(du_r - ctx.bordered_release(0, 1e-4)[0]))
+    assert gaps[2] < gaps[1] < gaps[0]
+
+
+def test_elastic_bordered_release_is_irwin():
+    """Elastic kernel: δL_P = 0 and δU/δX → K̃²/4 (Irwin) for an advance small against the contact."""
+    ctx = _context([-0.9, 1.0], zeta=0.0, rheology=Elastic(), smallest=1e-6, advance=1e-5)
+    k = ctx.stress_intensity()
+    for i in (0, 1):
+        du, dlp = ctx.bordered_release(i, 1e-5)
+        assert dlp == 0.0
+        assert du == pytest.approx(k[i] ** 2 / 4, rel=2e-3)
