@@ -268,7 +268,8 @@ def is_detached(record: Mapping[str, Any]) -> bool:
     """Whether a retraction record marks detachment (see the module docstring)."""
     if record["status"] == "no_contact":
         return True
-    return (record["status"] != ERROR and not has_contact(record)
+    # a solve that did not converge is no evidence of detachment
+    return (bool(record["converged"]) and not has_contact(record)
             and record["target"] <= 0.0)
 
 
@@ -333,8 +334,9 @@ def cycle_metrics(points: Mapping[str, np.ndarray]) -> CycleMetrics:
     turn = [i for i in app if contact[i]][-1:]
     branch = np.array(turn + [i for i in ret if contact[i]], dtype=int)
     branch = branch[np.argsort(-target[branch], kind="stable")]
+    converged = np.asarray(points["converged"], bool)
     detached_at = [i for i in ret if status[i] == "no_contact"
-                   or (status[i] != ERROR and not contact[i] and target[i] <= 0.0)]
+                   or (converged[i] and not touching[i] and target[i] <= 0.0)]
     if branch.size == 0:
         return CycleMetrics(toughness=nan, zero_load_penetration=nan, detached=bool(detached_at),
                             detachment_penetration=nan, detachment_bracket=nan,

@@ -63,6 +63,25 @@ def test_toughness_of_a_linear_branch():
     assert m.cycle_work == pytest.approx(work)
 
 
+def test_failed_solves_are_no_detachment():
+    """Retraction points that did not converge below Δ̃ = 0 say nothing about detachment: the
+    cycle is not detached and its bracket is unknown (they were once taken for detachment)."""
+    points = synthetic(lambda d: d - 0.3)
+    last = len(points["target"]) - 1
+    points["status"] = points["status"].astype("<U13")
+    points["status"][last] = "not_converged"
+    points["converged"][last] = False
+    m = cycle_metrics(points)
+    assert not m.detached and math.isnan(m.detachment_bracket)
+    assert m.detachment_penetration == pytest.approx(-0.2)      # last converged contact
+    from viscocontact.studies.cycle import is_detached
+
+    record = {k: v[last] for k, v in points.items()}
+    assert not is_detached(record)
+    record.update(status="no_contact", converged=True)
+    assert is_detached(record)
+
+
 def test_no_tension_no_toughness():
     m = cycle_metrics(synthetic(lambda d: d + 0.3, d_out=-0.2))
     assert m.toughness == 0.0 and math.isnan(m.zero_load_penetration)
