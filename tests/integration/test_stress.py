@@ -17,7 +17,6 @@ checked against it too. Units are those of thesis eq. 4.17.
 from __future__ import annotations
 
 import math
-import time
 
 import attrs
 import numpy as np
@@ -355,13 +354,11 @@ def _comb(K: int = 128, base: float = 5e-4) -> MeasuredProfile:
 def test_more_than_100_contacts():
     """121 contacts at p̃∞ = 0.1, 8 elements per contact (about 15 s). The check grid must resolve
     a newborn contact (a fraction of the 0.05 peak spacing): 16384 points."""
-    t0 = time.perf_counter()
     r = _solve(ContactProblem(profile=_comb(), rheology=Elastic(), solver=Newton(),
                               mean_pressure=0.1,
                               discretization=Discretization(elements=8, check_points=16384)))
     assert r.converged, r.message
     assert r.n_contacts > 100
-    assert time.perf_counter() - t0 < 90
 
 
 @pytest.mark.slow
