@@ -40,6 +40,11 @@ def ints(text: str) -> list[int]:
     return [int(v) for v in text.split(",") if v.strip()]
 
 
+def profiles(args) -> list[str]:
+    """The profiles named by ``--profiles`` ("rough", "wavy" or both, comma separated)."""
+    return [p.strip() for p in args.profiles.split(",") if p.strip()]
+
+
 def common_arguments(parser: argparse.ArgumentParser) -> None:
     """``--out``, ``--full``, ``--workers``, ``--force``, ``--quiet`` and the hidden ``--tiny``."""
     parser.add_argument("--out", default=".", help="folder for the .h5 study files and PNGs")

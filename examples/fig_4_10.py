@@ -37,7 +37,7 @@ def main(argv=None) -> list[Path]:
     cases.sweep_arguments(parser)
     args = parser.parse_args(argv)
     written, panels = [], []
-    for tag, profile in zip("ab", [p.strip() for p in args.profiles.split(",") if p.strip()]):
+    for tag, profile in zip("ab", cases.profiles(args)):
         family = cases.sweep_family(profile, "mean_pressure", args)
         written += [data.path for _, data in family]
         panels.append({"title": f"({tag}) {profile}", "quantity": "reduced_friction",

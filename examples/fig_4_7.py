@@ -42,7 +42,7 @@ def main(argv=None) -> list[Path]:
     cases.sweep_arguments(parser)
     args = parser.parse_args(argv)
     written = []
-    for profile in [p.strip() for p in args.profiles.split(",") if p.strip()]:
+    for profile in cases.profiles(args):
         panels = []
         for control, title in (("mean_pressure", "(a) load control"),
                                ("penetration", "(b) penetration control")):

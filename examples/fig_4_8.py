@@ -35,7 +35,7 @@ def main(argv=None) -> list[Path]:
     parser.add_argument("--gamma-zeta", type=float, default=1e-2, help="ζ of panel (b)")
     args = parser.parse_args(argv)
     written = []
-    for profile in [p.strip() for p in args.profiles.split(",") if p.strip()]:
+    for profile in cases.profiles(args):
         size = cases.CYCLES[cases.size_name(args)][profile]
         seeds = [0] if profile == "rough" else None
         gamma = cases.scene(profile).to_dict()["adhesion"]["gamma"]

@@ -47,7 +47,7 @@ def main(argv=None) -> list[Path]:
     parser.add_argument("--seeds", default=None, help="override the rough seeds (0 or 0:20)")
     args = parser.parse_args(argv)
     written, curves = [], []
-    for profile in [p.strip() for p in args.profiles.split(",") if p.strip()]:
+    for profile in cases.profiles(args):
         size = cases.CYCLES[cases.size_name(args)][profile]
         zetas = cases.floats((args.rough_zetas if profile == "rough" else None) or args.zetas
                              or size["toughness_zetas"])

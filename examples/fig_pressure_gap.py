@@ -36,7 +36,7 @@ def main(argv=None) -> list[Path]:
                         help="δX of the adhesive solution (default the package's 1e-4)")
     args = parser.parse_args(argv)
     written = []
-    for profile in [p.strip() for p in args.profiles.split(",") if p.strip()]:
+    for profile in cases.profiles(args):
         elements = {"rough": 16 if args.tiny else 32, "wavy": 32 if args.tiny else 64}[profile]
         study = Sweep(scene=cases.scene(profile, edge_perturbation=args.edge_perturbation),
                       zetas=[args.zeta], loads=[args.pressure], fields=True,

@@ -37,16 +37,16 @@ class SolvePlan:
         return "\n".join(self.lines())
 
 
-def _kernel_step(problem, kernel) -> PlanStep:
-    from .kernels.prepared import ACTIVE, FROZEN, RELAXED, branch_regimes
+def _kernel_step(kernel) -> PlanStep:
+    from .kernels.prepared import ACTIVE, FROZEN, RELAXED
 
     lengths = np.asarray(kernel.all_zetas, dtype=float)
     if lengths.size == 0:
         return PlanStep(stage="kernel", choice="elastic: Clausen function only, no memory table",
                         reason="the rheology has no creep branch")
-    regime = branch_regimes(lengths, problem.kernel_tolerance)
+    regime = kernel.regimes                      # as the tables were actually prepared
     n_active = int(np.sum(regime == ACTIVE))
-    tol = ("tolerance " + f"{problem.kernel_tolerance:g}" if problem.kernel_tolerance is not None
+    tol = ("tolerance " + f"{kernel.tolerance:g}" if kernel.tolerance is not None
            else "outside ζ_i ∈ [1e-12, 1e12]")
     parts = []
     for name, label in ((RELAXED, "relaxed (E0 side)"), (FROZEN, "frozen (glassy)")):
@@ -136,7 +136,7 @@ def solve_plan(problem, prepared) -> SolvePlan:
     spec = mesh_spec(problem.discretization, kernel, problem.adhesion)
     control = (f"load control, p̃∞ = {problem.mean_pressure:g}" if problem.mean_pressure is not None
                else f"penetration control, Δ̃ = {problem.penetration:g}")
-    steps = [_kernel_step(problem, kernel), *_geometry_steps(problem, kernel),
+    steps = [_kernel_step(kernel), *_geometry_steps(problem, kernel),
              _mesh_step(problem, spec, kernel), _edge_step(problem),
              PlanStep(stage="path", choice=control + "; approach from first touch unless an "
                       "initial contact set is given",

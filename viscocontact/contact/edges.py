@@ -135,6 +135,12 @@ class EdgeContext:
         return len(self.mesh.edges)
 
     @property
+    def dissipative(self) -> bool:
+        """Whether the kernel has a non-reciprocal part (memory branches or a layer correction):
+        without one, δL_P vanishes identically."""
+        return len(self.kernel.weights) > 0 or self.kernel.correction is not None
+
+    @property
     def edge_compliance(self) -> float:
         """``K_e``: coefficient of the log singularity of the kernel (E0·J(0+), or 1 if relaxed)."""
         return float(self.kernel.instantaneous)
@@ -208,7 +214,7 @@ class EdgeContext:
         offset as δX → 0. ``after`` differs from ``before`` (the base field) in one contact's
         elements only, so only that contact's rows and columns are evaluated anew.
         """
-        if len(self.kernel.weights) == 0 and self.kernel.correction is None:
+        if not self.dissipative:
             return 0.0
         E = self.kernel.even_antiderivative
         mb, ma = before.mesh, after.mesh
@@ -263,9 +269,9 @@ class EdgeContext:
             sizes = np.full(n, h)
         else:
             g = self.spec.grading
-            half = [h]
-            while sum(half) + half[-1] * g <= 0.5 * dx:
-                half.append(half[-1] * g)
+            # k sizes h g^j (j < k) from each end, as many as fit into half the advance
+            k = max(int(np.log1p(0.5 * dx * (g - 1.0) / h) / np.log(g)), 1)
+            half = h * g ** np.arange(k)
             sizes = np.concatenate([half, half[::-1]])
             sizes *= dx / sizes.sum()
         offsets = np.concatenate([[0.0], np.cumsum(sizes)])
@@ -315,7 +321,7 @@ class EdgeContext:
         d_u = -0.5 * (np.sum(mesh.width * (s_old - base.sigma) * w_old)
                       + np.sum(h_new * s_new * w_new))
         d_lp = 0.0
-        if len(k.weights) or k.correction is not None:
+        if self.dissipative:
             E = k.even_antiderivative
             a_sig, hsig_a = self._base_products()
             cols = element_integrals(E, mesh.mid, a, b)          # rows: base, columns: new

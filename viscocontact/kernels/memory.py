@@ -31,6 +31,8 @@ defining integral, for ζ from 1e-8 to 1e8): absolute error below 1e-9 in both t
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from scipy.special import gammainc
 
@@ -179,26 +181,19 @@ class MemoryTable:
         c = self._coef[j]
         return c[..., 0] + t * (c[..., 1] + t * (c[..., 2] + t * c[..., 3]))
 
-    @property
+    @functools.cached_property
     def _index(self):
-        idx = getattr(self, "_index_cache", None)
-        if idx is None:
-            idx = self._index_cache = np.arange(len(self.nodes), dtype=float)
-        return idx
+        return np.arange(len(self.nodes), dtype=float)
 
-    @property
+    @functools.cached_property
     def _coef(self):
         """Per interval, the coefficients of ``t⁰..t³`` of the Hermite interpolant minus ``H(0)``."""
-        coef = getattr(self, "_coef_cache", None)
-        if coef is None:
-            h = np.diff(self.nodes)
-            H0, H1 = self.H[:-1], self.H[1:]
-            G0, G1 = self.G[:-1] * h, self.G[1:] * h
-            end = np.zeros(len(h), dtype=bool)
-            end[[self._j0 - 1, self._j0]] = True     # G is singular at 0: linear there
-            G0 = np.where(end, H1 - H0, G0)
-            G1 = np.where(end, H1 - H0, G1)
-            coef = np.stack([H0 - self.H0, G0, 3 * (H1 - H0) - 2 * G0 - G1,
-                             2 * (H0 - H1) + G0 + G1], axis=-1)
-            self._coef_cache = coef
-        return coef
+        h = np.diff(self.nodes)
+        H0, H1 = self.H[:-1], self.H[1:]
+        G0, G1 = self.G[:-1] * h, self.G[1:] * h
+        end = np.zeros(len(h), dtype=bool)
+        end[[self._j0 - 1, self._j0]] = True     # G is singular at 0: linear there
+        G0 = np.where(end, H1 - H0, G0)
+        G1 = np.where(end, H1 - H0, G1)
+        return np.stack([H0 - self.H0, G0, 3 * (H1 - H0) - 2 * G0 - G1,
+                         2 * (H0 - H1) + G0 + G1], axis=-1)

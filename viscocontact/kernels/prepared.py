@@ -40,6 +40,11 @@ class PreparedKernel:
         Weights ``w_i`` and memory lengths ``ζ_i`` of the active memory branches.
     mean : float
         ``c0`` (constant kernel, eq. 2.44).
+    regimes : ndarray of str
+        How each creep branch (``all_zetas``) entered: ``"relaxed"``, ``"active"`` or ``"frozen"``
+        (:func:`branch_regimes` with ``tolerance``).
+    tolerance : float or None
+        The tolerance the regimes were decided with.
     """
 
     kernel: object
@@ -54,6 +59,8 @@ class PreparedKernel:
     all_weights: np.ndarray
     all_zetas: np.ndarray
     k_inf: float
+    regimes: np.ndarray
+    tolerance: float | None = None
 
     @classmethod
     def build(cls, kernel, rheology, zeta: float, tolerance: float | None = None) -> "PreparedKernel":
@@ -78,7 +85,8 @@ class PreparedKernel:
             corr, corr_v = _correction_splines(kernel, k_inf, w_all, z_all, n_modes)
         return cls(kernel=kernel, zeta=zeta, instantaneous=inst, weights=w, zetas=z,
                    mean=float(kernel.mean_compliance()), tables=tables, correction=corr,
-                   correction_values=corr_v, all_weights=w_all, all_zetas=z_all, k_inf=k_inf)
+                   correction_values=corr_v, all_weights=w_all, all_zetas=z_all, k_inf=k_inf,
+                   regimes=regime, tolerance=tolerance)
 
     # ---- Fourier view ----------------------------------------------------------------------
     def compliance(self, m):
