@@ -130,10 +130,11 @@ def _edge_step(problem) -> PlanStep:
 
 def solve_plan(problem, prepared) -> SolvePlan:
     """The :class:`SolvePlan` of ``problem`` with its prepared tables."""
-    from .problem import mesh_spec
+    from .problem import mesh_spec, residual_scale
 
     kernel = prepared.kernel
     spec = mesh_spec(problem.discretization, kernel, problem.adhesion)
+    scale = residual_scale(kernel)
     control = (f"load control, p̃∞ = {problem.mean_pressure:g}" if problem.mean_pressure is not None
                else f"penetration control, Δ̃ = {problem.penetration:g}")
     steps = [_kernel_step(kernel), *_geometry_steps(problem, kernel),
@@ -144,7 +145,8 @@ def solve_plan(problem, prepared) -> SolvePlan:
              PlanStep(stage="solver", choice=f"{type(problem.solver).__name__}"
                       + (f", {type(problem.fallback).__name__} fallback" if problem.fallback
                          else ""),
-                      reason=f"edge residual tolerance {problem.tolerances.residual:g}"),
+                      reason=f"edge residual tolerance {problem.tolerances.residual:g}"
+                      + (f" × {scale:.3g} (stiffness E_eff/E0 at this ζ)" if scale > 1 else "")),
              PlanStep(stage="reuse",
                       choice="kernel tables once per solve (pass prepared= along a path); one LU "
                              "per contact set, shared by every virtual edge advance",

@@ -99,6 +99,18 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
                     smallest=smallest, advance=min(advance) if advance and smallest else None)
 
 
+def residual_scale(kernel) -> float:
+    """``max(1, E_eff/E0)``: the factor on the edge residual tolerance for a prepared kernel.
+
+    ``E_eff = 1/|K(1)|`` is the modulus the solid shows at the fundamental wavelength (``E0`` in
+    the relaxed limit, ``E∞`` in the glassy one). Edge residuals scale with the stresses, and so
+    does their round-off: at ``ζ → ∞`` with ``β = 1e4`` an absolute tolerance of 1e-9 lies below
+    what double precision can resolve.
+    """
+    k1 = abs(complex(kernel.compliance(1.0)))
+    return max(1.0, 1.0 / k1) if k1 > 0 and np.isfinite(k1) else 1.0
+
+
 @attrs.frozen(kw_only=True, eq=False)
 class Prepared:
     """What a problem precomputes once: kernel tables, normalised profile, m2."""
@@ -189,7 +201,9 @@ class ContactProblem:
         ``ζ = q0 V τ >= 0``.
     discretization : Discretization
     tolerances : Tolerances
-        Edge residual tolerance in stress-intensity units.
+        Edge residual tolerance in stress-intensity units of the relaxed modulus ``E0``, scaled by
+        the stiffness of the solid at this ζ (:func:`residual_scale`): a glassy solid's stresses,
+        and the round-off in its edge residuals, are ``E∞/E0`` times larger.
     max_restarts : int
         Largest number of contact-set changes in one equilibrium solve.
     kernel_tolerance : float or None
@@ -301,6 +315,8 @@ class _Run:
         self.n_edges = 0
         shape = prep.shape
         self.origin = shape.peak_position - np.pi
+        tol = problem.tolerances
+        self.tolerances = attrs.evolve(tol, residual=tol.residual * residual_scale(prep.kernel))
 
     # ---- checks -----------------------------------------------------------------------------
     def grid(self):
@@ -356,7 +372,7 @@ class _Run:
         while a halved step (and at the end :meth:`snap`) finds the jump anyway.
         """
         p = self.problem
-        tolerances = p.tolerances
+        tolerances = self.tolerances
         if budget is not None:
             tolerances = attrs.evolve(tolerances, max_evaluations=min(budget,
                                                                       tolerances.max_evaluations))
@@ -441,7 +457,7 @@ class _Run:
         system = _EdgeSystem(self, control, edges)
         self.n_edges = len(edges)
         try:
-            self.problem.fallback.solve(system, edges, self.problem.tolerances)
+            self.problem.fallback.solve(system, edges, self.tolerances)
         except TopologyChange as change:
             self.evaluations += system.evaluations
             return change.full_contact

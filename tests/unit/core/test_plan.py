@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import json
 
+import attrs
+
 import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -126,3 +128,28 @@ def test_cli_explain_prints_the_plan_without_solving(tmp_path, capsys):
     assert main(["solve", str(scene), "--explain", "--json"]) == 0
     steps = json.loads(capsys.readouterr().out)
     assert [s["stage"] for s in steps][:3] == ["kernel", "mean displacement", "layer series"]
+
+
+# ---- the stiffness scale of the edge residual tolerance ----------------------------------------
+@settings(max_examples=30, deadline=None)
+@given(beta=st.floats(1.01, 1e4), log_zeta=st.floats(-8.0, 8.0))
+def test_residual_scale_lies_between_relaxed_and_glassy_stiffness(beta, log_zeta):
+    """``max(1, E_eff/E0)`` with E_eff between E0 and E∞ = β E0, increasing with ζ, 1 when
+    elastic, and at the limits the relaxed (1) and glassy (β) stiffness."""
+    from viscocontact.problem import residual_scale
+
+    sls = StandardLinearSolid(beta=beta)
+    s = residual_scale(HalfPlane().prepare(sls, 10.0**log_zeta))
+    assert 1.0 <= s <= beta * (1 + 1e-12)
+    assert s <= residual_scale(HalfPlane().prepare(sls, 10.0**(log_zeta + 1))) * (1 + 1e-12)
+    assert residual_scale(HalfPlane().prepare(sls, 0.0)) == pytest.approx(1.0)
+    assert residual_scale(HalfPlane().prepare(sls, 1e12)) == pytest.approx(beta, rel=1e-9)
+    assert residual_scale(HalfPlane().prepare(Elastic(), 10.0**log_zeta)) == 1.0
+
+
+def test_plan_reports_the_scaled_tolerance():
+    glassy = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+                            solver=Newton(), mean_pressure=0.1, zeta=1e8)
+    assert "× 10 (stiffness" in str(glassy.plan())
+    relaxed = attrs.evolve(glassy, zeta=0.0)
+    assert "stiffness" not in str(relaxed.plan())
