@@ -13,6 +13,7 @@ the target load once it is bracketed), so that the same scene always gives the s
 """
 from __future__ import annotations
 
+import functools
 import time
 
 import attrs
@@ -322,9 +323,19 @@ class _Run:
     def grid(self):
         return self.origin + TWO_PI * (np.arange(self.disc.check_points) + 0.5) / self.disc.check_points
 
+    @functools.cached_property
+    def check_x(self):
+        """Where interpenetration is checked: the uniform grid and every local maximum of the
+        profile, so that a contact narrower than the grid spacing is still born."""
+        maxima = getattr(self.prep.shape.profile, "local_maxima", None)
+        if maxima is None:          # a duck-typed profile that is not a Profile subclass
+            return self.grid()
+        peaks = self.origin + np.mod(np.asarray(maxima(), float) - self.origin, TWO_PI)
+        return np.unique(np.concatenate([self.grid(), peaks]))
+
     def gap_outside(self, fields):
-        """Gap ``ũ - w`` on the check grid outside the contacts (edges excluded by 1% width)."""
-        x = self.grid()
+        """Gap ``ũ - w`` at the check points outside the contacts (edges excluded by 1% width)."""
+        x = self.check_x
         mesh = fields.mesh
         keep = np.ones(x.shape, bool)
         for j in range(mesh.n_contacts):
@@ -468,7 +479,7 @@ class _Run:
         if "penetration" not in control:
             # load control with no contact: only a compressive target needs one
             return None if control["mean_pressure"] <= 0 else self.first_touch()[1]
-        x = self.grid()
+        x = self.check_x
         w = self.prep.shape.heights(x) - 1.0 + control["penetration"]
         regions = negative_regions(x, -w, 0.0)
         if not regions:

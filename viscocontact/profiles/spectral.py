@@ -30,7 +30,7 @@ import numpy as np
 
 from .._validation import array_eq
 from ..errors import ValidationError
-from .base import TWO_PI, Profile, ProfileStatistics
+from .base import TWO_PI, Profile, ProfileStatistics, sampled_maxima
 
 __all__ = ["Modes", "SpectralProfile"]
 
@@ -203,6 +203,11 @@ class SpectralProfile(Profile):
             kurtosis=float(np.mean(r**4) / sd**4) if sd > 0 else 0.0)
 
     # -- peak --------------------------------------------------------------------------------------
+
+    def local_maxima(self) -> np.ndarray:
+        """Local maxima from ``n >= 16 k_max`` FFT samples (see :meth:`Profile.local_maxima`)."""
+        kmax = int(self.modes.wavenumbers[-1])
+        return sampled_maxima(self.grid_values(1 << max(13, math.ceil(math.log2(16 * kmax)))))
 
     def peak(self) -> tuple[float, float]:
         """``(x̃_peak, Λ̃)``: position in ``[0, 2π)`` and value of the global maximum of ``q0·r``.

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 from viscocontact import ValidationError
 from viscocontact.profiles import Modes, SelfAffineProfile, SpectralProfile
-from viscocontact.testing.strategies_profiles import profiles
+from viscocontact.testing.strategies_profiles import profiles, self_affine_profiles
 
 TWO_PI = 2 * np.pi
 SETTINGS = settings(max_examples=50, deadline=None)
@@ -188,3 +188,37 @@ def test_grid_values_rejects_bad_n():
     p = Series(k=(1,), a=(1.0,), phi=(0.0,))
     with pytest.raises(ValidationError, match="grid_values.n"):
         p.grid_values(0)
+
+
+# ---- local maxima (where contacts are born) ----------------------------------------------------
+@settings(max_examples=40, deadline=None)
+@given(p=self_affine_profiles(max_scales=128))
+def test_local_maxima_are_maxima_and_include_the_peak(p):
+    """Every reported maximum has zero slope to sampling accuracy and negative curvature or a
+    flat top; the global peak is among them; sorted in [0, 2π)."""
+    from viscocontact.profiles.base import TWO_PI
+
+    m = p.local_maxima()
+    assert np.all(np.diff(m) > 0) and m[0] >= 0 and m[-1] < TWO_PI
+    kmax = p.modes.wavenumbers[-1]
+    n = 1 << max(13, int(np.ceil(np.log2(16 * kmax))))
+    h = TWO_PI / n
+    # within half a sample of a zero of the slope: the slope changes sign across m ± h
+    assert np.all(p.slopes(m - h) >= -1e-12 * np.abs(p.slopes(m - h)).max())
+    assert np.all(p.slopes(m + h) <= 1e-12 * np.abs(p.slopes(m + h)).max())
+    xp, lam = p.peak()
+    d = np.abs(np.angle(np.exp(1j * (m - xp))))
+    assert d.min() <= h
+    # and no maximum is missed: the count equals the sign changes of the slope, + to -
+    s = p.grid_values(n, derivative=1)
+    assert len(m) == int(np.sum((s > 0) & (np.roll(s, -1) <= 0)))
+
+
+@pytest.mark.parametrize("k", [1, 7, 128])
+def test_local_maxima_of_a_cosine(k):
+    from viscocontact.profiles import MeasuredProfile
+
+    amp = np.zeros(k)
+    amp[-1] = 1.0
+    p = MeasuredProfile(amplitudes=amp, phases=np.zeros(k), length=1.0)
+    np.testing.assert_allclose(p.local_maxima(), 2 * np.pi * np.arange(k) / k, atol=1e-12)
