@@ -513,7 +513,66 @@ class _Run:
             out = self.equilibrate(edges, target)
         else:
             out = self.approach(target)
+            if "mean_pressure" in target and out[0] == "converged" and p.adhesion.work_of_adhesion > 0:
+                out = self.stable_under_load(out, target)
         return self.assemble(out, target, want_fields, time.perf_counter() - t0)
+
+    # ---- stability under load control ----------------------------------------------------------
+    def load_stiffness(self, state, eps: float) -> float:
+        """``dp̃∞/dΔ̃`` at a converged state, by one penetration-controlled solve at ``Δ̃ - eps``
+        (NaN when that solve does not converge)."""
+        fields = state[2]
+        trial = self.equilibrate(state[1], {"penetration": fields.penetration - eps},
+                                 use_fallback=False, budget=APPROACH_BUDGET)
+        if trial[0] != "converged":
+            return np.nan
+        return (fields.mean_pressure - trial[2].mean_pressure) / eps
+
+    def stable_under_load(self, out, target):
+        """The approach's load-controlled root if it is stable, else the stable one below it.
+
+        An adhesive contact has roots of ``p̃∞(Ã) = target`` on a branch where the load falls as
+        the contact grows (``dp̃∞/dΔ̃ < 0``; Johnson's wavy contact between its load maximum and
+        closure). Under load control such a root is unstable: approached from first touch at a
+        fixed load, the contact stops growing at the first stable root, which has a smaller area.
+        The approach can still land on the unstable one when a jump overshoots the load maximum.
+        Then the penetration is lowered step by step, over the load maximum, until the load falls
+        below the target on the stable side (``dp̃∞/dΔ̃ > 0``), and the load-controlled root is
+        solved from the closer bracket. A root whose stiffness cannot be decided stays as it is
+        (an event says so); when no stable root is found the solve fails with the reason.
+        """
+        eps = 1e-3 * self.disc.path_step
+        k = self.load_stiffness(out, eps)
+        if not np.isfinite(k):
+            self.events.append("stability under load control not decided: the perturbed "
+                               "penetration-controlled solve did not converge")
+            return out
+        if k >= 0:
+            return out
+        self.events.append(f"root unstable under load control (dp/dΔ = {k:.3g}); "
+                           "looking for the stable root at a smaller penetration")
+        goal = target["mean_pressure"]
+        state, step = out, 0.125 * self.disc.path_step
+        p_prev = out[2].mean_pressure
+        while step >= 1e-6 * self.disc.path_step:
+            d_next = state[2].penetration - step
+            trial = self.equilibrate(state[1], {"penetration": d_next}, budget=APPROACH_BUDGET)
+            if trial[0] != "converged":
+                step *= 0.5
+                continue
+            p_next = trial[2].mean_pressure
+            if p_next < goal and p_next < p_prev:       # crossed the target on the stable side
+                start = trial if goal - p_next < p_prev - goal else state
+                final = self.equilibrate(start[1], target)
+                if final[0] == "converged" and self.load_stiffness(final, eps) >= 0:
+                    return final
+                break
+            state, p_prev = trial, p_next
+            step = min(1.5 * step, 0.5 * self.disc.path_step)
+        fields, ctx = out[2], out[3]
+        return ("not_converged", out[1], fields, ctx, out[4],
+                "the equilibrium found is unstable under load control (dp̃∞/dΔ̃ = "
+                f"{k:.3g} < 0) and no stable root was found at smaller penetration")
 
     def from_full_contact(self, target):
         """Continue from a closed contact. With infinitely short-range adhesion a closed
