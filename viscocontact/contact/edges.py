@@ -309,8 +309,15 @@ class EdgeContext:
         a, b = new
         xi = 0.5 * (a + b)
         base, mesh, k = self.fields, self.mesh, self.kernel
-        c = k.influence(mesh.mid, a, b)                          # (N, n)
-        r = k.influence(xi, mesh.left, mesh.right)              # (n, N)
+        pair = getattr(k, "antiderivative_pair", None) if self.dissipative else None
+        if pair is not None:      # influence and antisymmetric integrals share the table look-ups
+            c, cols = element_integrals(pair, mesh.mid, a, b)
+            r, rows = element_integrals(pair, xi, mesh.left, mesh.right)
+            c += k.mean * (b - a)
+            r += k.mean * mesh.width
+        else:
+            c = k.influence(mesh.mid, a, b)                      # (N, n)
+            r = k.influence(xi, mesh.left, mesh.right)          # (n, N)
         d = k.influence(xi, a, b)                                # (n, n)
         w_new = self.shape.heights(xi) - 1.0 + base.penetration
         Y = lu_solve(base.lu, c, check_finite=False)
@@ -322,10 +329,11 @@ class EdgeContext:
                       + np.sum(h_new * s_new * w_new))
         d_lp = 0.0
         if self.dissipative:
-            E = k.even_antiderivative
             a_sig, hsig_a = self._base_products()
-            cols = element_integrals(E, mesh.mid, a, b)          # rows: base, columns: new
-            rows = element_integrals(E, xi, mesh.left, mesh.right)   # rows: new, columns: base
+            if pair is None:
+                E = k.even_antiderivative
+                cols = element_integrals(E, mesh.mid, a, b)      # rows: base, columns: new
+                rows = element_integrals(E, xi, mesh.left, mesh.right)   # new, base
             hsig = mesh.width * base.sigma
             q_ba = hsig_a @ s_old + hsig @ (cols @ s_new)
             q_ab = (mesh.width * s_old) @ a_sig + (h_new * s_new) @ (rows @ base.sigma)

@@ -81,12 +81,17 @@ def cl2(x):
     """
     t = wrap(x)
     t2 = t * t
-    acc = np.zeros_like(t)
-    for c in _CL2_FAST:
-        acc = acc * t2 + c
+    acc = np.full_like(t, _CL2_FAST[0])
+    for c in _CL2_FAST[1:]:             # Horner in place (the same arithmetic, no temporaries)
+        acc *= t2
+        acc += c
     with np.errstate(divide="ignore", invalid="ignore"):
         lg = np.where(t == 0.0, 0.0, t * np.log(np.abs(t)))
-    return t - lg + t * t2 * acc
+    tail = t * t2
+    tail *= acc
+    out = t - lg
+    out += tail
+    return out
 
 
 def log_kernel(x):

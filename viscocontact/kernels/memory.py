@@ -178,8 +178,15 @@ class MemoryTable:
         s = np.interp(wrap(x), self.nodes, self._index)
         j = np.minimum(s.astype(np.intp), len(self.nodes) - 2)
         t = s - j
-        c = self._coef[j]
-        return c[..., 0] + t * (c[..., 1] + t * (c[..., 2] + t * c[..., 3]))
+        c0, c1, c2, c3 = self._coef
+        out = c3.take(j)                # Horner in place on contiguous gathers: 2x the speed of
+        out *= t                        # gathering rows of an (n, 4) table
+        out += c2.take(j)
+        out *= t
+        out += c1.take(j)
+        out *= t
+        out += c0.take(j)
+        return out
 
     @functools.cached_property
     def _index(self):
@@ -187,7 +194,8 @@ class MemoryTable:
 
     @functools.cached_property
     def _coef(self):
-        """Per interval, the coefficients of ``t⁰..t³`` of the Hermite interpolant minus ``H(0)``."""
+        """Per interval, the coefficients of ``t⁰``, ..., ``t³`` of the Hermite interpolant minus
+        ``H(0)`` (four arrays)."""
         h = np.diff(self.nodes)
         H0, H1 = self.H[:-1], self.H[1:]
         G0, G1 = self.G[:-1] * h, self.G[1:] * h
@@ -195,5 +203,5 @@ class MemoryTable:
         end[[self._j0 - 1, self._j0]] = True     # G is singular at 0: linear there
         G0 = np.where(end, H1 - H0, G0)
         G1 = np.where(end, H1 - H0, G1)
-        return np.stack([H0 - self.H0, G0, 3 * (H1 - H0) - 2 * G0 - G1,
-                         2 * (H0 - H1) + G0 + G1], axis=-1)
+        return tuple(np.ascontiguousarray(c) for c in (
+            H0 - self.H0, G0, 3 * (H1 - H0) - 2 * G0 - G1, 2 * (H0 - H1) + G0 + G1))

@@ -127,6 +127,23 @@ class PreparedKernel:
             acc = acc + self.correction(np.mod(x, TWO_PI)) + self.correction(np.mod(-x, TWO_PI))
         return acc / np.pi
 
+    def antiderivative_pair(self, x):
+        """``[F̃(x), F̃(x) + F̃(-x)]`` stacked (:meth:`antiderivative` and
+        :meth:`even_antiderivative`, the same values), sharing each memory table's evaluation at
+        ``x``: two table look-ups per branch instead of three."""
+        x = np.asarray(x, dtype=float)
+        acc = -self.instantaneous * cl2(x)
+        even = np.zeros_like(x)
+        for wi, tab in zip(self.weights, self.tables):
+            plus = tab.antiderivative(x)
+            acc = acc + wi * plus
+            even = even + wi * (plus + tab.antiderivative(-x))
+        if self.correction is not None:
+            plus = self.correction(np.mod(x, TWO_PI))
+            acc = acc + plus
+            even = even + plus + self.correction(np.mod(-x, TWO_PI))
+        return np.stack([acc / np.pi, even / np.pi])
+
     def values(self, x):
         """The kernel ``G̃_V(x)`` of eq. 4.19 (times ``S_m`` geometry, plus ``c0``) at points ``x``."""
         x = np.asarray(x, dtype=float)
@@ -194,7 +211,9 @@ def element_integrals(antiderivative, points, left, right) -> np.ndarray:
     """``F(ξ_l - a_q) - F(ξ_l - b_q)`` for an antiderivative ``F``: integrals over elements.
 
     Neighbouring elements share an end (``b_q = a_{q+1}``), so ``F`` is evaluated once per
-    distinct end, about half the work of evaluating both ends of every element.
+    distinct end, about half the work of evaluating both ends of every element. ``F`` may return
+    several functions stacked along leading axes (shape ``(k,) + x.shape``, e.g.
+    :meth:`PreparedKernel.antiderivative_pair`); so does the result.
     """
     xi = np.asarray(points, dtype=float)
     a = np.asarray(left, dtype=float)
@@ -204,7 +223,7 @@ def element_integrals(antiderivative, points, left, right) -> np.ndarray:
     if ends.size == a.size + b.size:        # no shared ends
         return antiderivative(xi[:, None] - a[None, :]) - antiderivative(xi[:, None] - b[None, :])
     values = antiderivative(xi[:, None] - ends[None, :])
-    return values[:, where[:a.size]] - values[:, where[a.size:]]
+    return values[..., where[:a.size]] - values[..., where[a.size:]]
 
 
 def _correction_splines(kernel, k_inf, w_all, z_all, n_modes):
