@@ -12,6 +12,7 @@ gives; :class:`PowerLawPSD` holds the continuous PSD of eqs. 4.52-4.54 with eith
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import attrs
@@ -95,13 +96,17 @@ class SelfAffineProfile(SpectralProfile):
             k = np.maximum(k, self.rolloff)
         return k ** -(self.hurst + 0.5)
 
-    @property
+    @functools.cached_property
     def modes(self) -> Modes:
-        """Modes ``k = 1..N_q`` with amplitudes scaled to the exact rms and seeded phases."""
+        """Modes ``k = 1..N_q`` with amplitudes scaled to the exact rms and seeded phases
+        (computed once; the arrays are read-only)."""
         w = self.relative_amplitudes()
         a = w * (self.rms * math.sqrt(2.0) / math.sqrt(float(np.sum(w * w))))
         phases = np.random.default_rng(self.seed).uniform(0.0, TWO_PI, self.scales)
-        return Modes(wavenumbers=np.arange(1, self.scales + 1), amplitudes=a, phases=phases)
+        modes = Modes(wavenumbers=np.arange(1, self.scales + 1), amplitudes=a, phases=phases)
+        for arr in (modes.wavenumbers, modes.amplitudes, modes.phases):
+            arr.flags.writeable = False
+        return modes
 
     def continuous_psd(self) -> PowerLawPSD:
         """The continuous PSD of eqs. 4.52-4.53 with ``C0`` exactly as printed in eq. 4.53.
