@@ -56,3 +56,31 @@ def test_rough_adhesive_converges(zeta):
     assert r.min_gap >= 0
     t = r.edge_terms
     assert np.allclose(t.stored + t.nonconservative, t.target, rtol=1e-3, atol=1e-7)
+
+
+@pytest.mark.parametrize("zeta,p,adhesive", [(1e-6, 0.05, True), (1e4, 0.6, True),
+                                             (1e4, 0.6, False)])
+def test_rough_acceptance_corners_are_the_elastic_limits(zeta, p, adhesive):
+    """Corners of the acceptance range (seed 0, Broyden, from first touch): converged, no
+    interpenetration, and the same equilibrium as an elastic solid with E0 (ζ = 1e-6: every
+    memory length, and the edge's δX = 1e-4, is far above ζ) or E∞ = 10 E0 (ζ = 1e4). The full
+    ζ x p̃∞ table is in docs/verification.md. (ζ = 1e-6 at p̃∞ = 0.6 takes minutes: it is in the
+    table, not here.)"""
+    from viscocontact.rheology import Elastic
+    from viscocontact.solvers import Broyden
+
+    def adhesion(scale):
+        return EnergyBalance(gamma=2.387e-7 / scale) if adhesive else NoAdhesion()
+
+    visco = attrs.evolve(_problem(0, mean_pressure=p, zeta=zeta, adhesion=adhesion(1.0)),
+                         solver=Broyden())
+    # an elastic solid with modulus E: p̃∞ and γ̃ in units of E (E0 units divided by E/E0)
+    scale = 1.0 if zeta < 1 else SLS.beta
+    elastic = attrs.evolve(visco, rheology=Elastic(), zeta=0.0, mean_pressure=p / scale,
+                           adhesion=adhesion(scale))
+    r, e = visco.solve(), elastic.solve()
+    assert r.converged and e.converged, (r.message, e.message)
+    assert r.min_gap >= 0 and e.min_gap >= 0 and r.residual <= 1e-7
+    assert r.n_contacts == e.n_contacts
+    assert r.area == pytest.approx(e.area, rel=1e-3)
+    assert abs(r.friction) < 1e-3 * np.sqrt(visco.prepare().m2)
