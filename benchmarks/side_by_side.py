@@ -67,8 +67,9 @@ def main(argv=None) -> int:
         for case in cases:
             for label, tree in (("old", args.old), ("new", args.new)):
                 env = dict(os.environ, PYTHONPATH=os.path.abspath(tree))
+                # cwd = the tree: ``python -c`` puts the working folder first on sys.path
                 out = subprocess.run([sys.executable, "-c", _CHILD, case], env=env,
-                                     capture_output=True, text=True)
+                                     cwd=os.path.abspath(tree), capture_output=True, text=True)
                 lines = out.stdout.strip().splitlines()
                 row = json.loads(lines[-1]) if out.returncode == 0 and lines else {
                     "case": case, "error": out.stderr.strip().splitlines()[-1:]}
