@@ -135,6 +135,7 @@ def solve_plan(problem, prepared) -> SolvePlan:
     kernel = prepared.kernel
     spec = mesh_spec(problem.discretization, kernel, problem.adhesion)
     scale = residual_scale(kernel)
+    adhesive_load = problem.mean_pressure is not None and problem.adhesion.work_of_adhesion > 0
     control = (f"load control, p̃∞ = {problem.mean_pressure:g}" if problem.mean_pressure is not None
                else f"penetration control, Δ̃ = {problem.penetration:g}")
     steps = [_kernel_step(kernel), *_geometry_steps(problem, kernel),
@@ -146,7 +147,11 @@ def solve_plan(problem, prepared) -> SolvePlan:
                       + (f", {type(problem.fallback).__name__} fallback" if problem.fallback
                          else ""),
                       reason=f"edge residual tolerance {problem.tolerances.residual:g}"
-                      + (f" × {scale:.3g} (stiffness E_eff/E0 at this ζ)" if scale > 1 else "")),
+                      + (f" × {scale:.3g} (stiffness E_eff/E0 at this ζ)" if scale > 1.0005
+                         else "")
+                      + ", or the measured round-off floor of the residuals if higher"
+                      + ("; a load-controlled root reached from first touch is checked for "
+                         "stability (dp̃∞/dΔ̃ > 0)" if adhesive_load else "")),
              PlanStep(stage="reuse",
                       choice="kernel tables once per solve (pass prepared= along a path); one LU "
                              "per contact set, shared by every virtual edge advance",
