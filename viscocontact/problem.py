@@ -668,6 +668,10 @@ class _Run:
             if jump is not None:
                 self.events.append("first contact jumped")
                 out = jump
+        if out[0] == "not_converged" and "mean_pressure" in target:
+            direct = self.at_target_from_first_touch(edges, target)
+            if direct is not None:
+                return direct
         if out[0] != "converged":
             return out
         state = out
@@ -718,6 +722,27 @@ class _Run:
                 continue
             step *= 0.5
             self.events.append(f"approach step halved to {step:.3g}")
+
+    def at_target_from_first_touch(self, edges, target):
+        """The target load solved directly from the first contact widened 4 and 16 times, when
+        the first contact has no equilibrium at first touch (or None).
+
+        With strong adhesion at ζ where the trailing edge is toughened, the first contact can
+        have no steady equilibrium at the first-touch penetration: its edges run round the
+        period together (sinusoid Λ̃ = 0.1, β = 10, γ̃ = 5e-4, ζ = 1: the contact translated
+        by two periods before the solver gave up). Under load control the target still has an
+        answer (there: full contact); the event log says that the path was cut short.
+        """
+        centre = 0.5 * (edges[0] + edges[1])
+        half = 0.5 * (edges[1] - edges[0])
+        for factor in (4.0, 16.0):
+            w = min(factor * half, 0.45 * TWO_PI)
+            out = self.equilibrate(np.array([centre - w, centre + w]), target)
+            if out[0] in ("converged", "full_contact"):
+                self.events.append("no equilibrium at first touch; the target load was solved "
+                                   f"from the first contact widened {factor:g} times")
+                return out
+        return None
 
     def wants_to_grow(self, edges, control) -> bool:
         """Whether every edge of ``edges`` has a negative residual (would advance outward)."""

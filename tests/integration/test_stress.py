@@ -449,3 +449,21 @@ def test_failure_is_loud_and_carries_the_result():
     assert info.value.result.message == r.message
     _check(prob, r)
     assert math.isfinite(r.iterations)
+
+
+@pytest.mark.parametrize("zeta", [1e-2, 1.0, 1e2])
+def test_strong_adhesion_without_equilibrium_at_first_touch(zeta):
+    """Γ̃ = 0.05, p̃∞ = 0.3, β = 10: at ζ = 1e-2 and 1 the first contact has no equilibrium at
+    the first-touch penetration (its edges ran round the period until the solver gave up, and
+    the solve failed); the target load is then solved from a widened first contact. Johnson
+    with E0 closes the contact above p̃∞ = 0.1676, so ζ = 1e-2 (and ζ = 1, where the trailing
+    edge is toughened further) end in full contact; at ζ = 1e2 Johnson with E∞ gives Ã = 1.3832."""
+    r = _solve(_wavy(rheology=StandardLinearSolid(beta=10.0), zeta=zeta, mean_pressure=0.3,
+                     adhesion=_adhesion(0.05), discretization=Discretization(elements=32)))
+    assert r.converged, r.message
+    if zeta < 10:
+        assert JohnsonWavy(Gamma=0.05).closure()[1] < 0.3
+        assert r.full_contact
+    else:
+        ref = JohnsonWavy(Gamma=0.05, modulus_ratio=_modulus_ratio(10.0, zeta)).area_at_pressure(0.3)
+        assert r.area == pytest.approx(ref, rel=1e-3)
