@@ -387,6 +387,7 @@ class _Run:
             inner = np.zeros(s.shape, bool)
             inner[3:-3] = s[3:-3] > 1e-6 * scale
             if inner.any():
+                self._tension = max(getattr(self, "_tension", 0.0), float(np.max(s[3:-3])) / scale)
                 idx = np.flatnonzero(inner)
                 lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
                 out += [mesh.edges[2 * j], lo, hi, mesh.edges[2 * j + 1]]
@@ -412,6 +413,7 @@ class _Run:
         edges = np.asarray(edges, dtype=float)
         fallback_first = False
         converged_before_births: list[np.ndarray] = []
+        splits: list[np.ndarray] = []
         for _ in range(p.max_restarts):
             if edges.size == 0:
                 born = self.births_without_contact(control)
@@ -478,8 +480,17 @@ class _Run:
                 edges = merged
                 continue
             split = self.tensile_split(fields)
+            if split is not None and sum(len(split) == len(y) and np.allclose(split, y, rtol=0,
+                                                                              atol=1e-3)
+                                         for y in splits) >= 2:
+                return ("not_converged", x, fields, ctx, float(np.max(np.abs(r))),
+                        "contact set cycles: a merged contact carries tension, and the parts it "
+                        "is split into merge again")
             if split is not None:
-                self.events.append("adhesionless contact split where it carried tension")
+                splits.append(split)
+                self.events.append("adhesionless contact split where it carried tension "
+                                   f"(up to {self._tension:.2g} of the largest pressure)")
+                self._tension = 0.0
                 edges = split
                 continue
             return ("converged", x, fields, ctx, float(np.max(np.abs(r))), "converged")
@@ -561,6 +572,11 @@ class _Run:
         elif initial is not None:
             edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()
             out = self.equilibrate(edges, target)
+            if out[0] == "not_converged" and p.adhesion.work_of_adhesion <= 0:
+                # an adhesionless equilibrium does not depend on the path: start afresh
+                self.events.append(f"no equilibrium from the given contact set ({out[5]}); "
+                                   "solved from first touch")
+                out = self.approach(target)
         else:
             out = self.approach(target)
             if "mean_pressure" in target and out[0] == "converged" and p.adhesion.work_of_adhesion > 0:

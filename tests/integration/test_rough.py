@@ -84,3 +84,23 @@ def test_rough_acceptance_corners_are_the_elastic_limits(zeta, p, adhesive):
     assert r.n_contacts == e.n_contacts
     assert r.area == pytest.approx(e.area, rel=1e-3)
     assert abs(r.friction) < 1e-3 * np.sqrt(visco.prepare().m2)
+
+
+@pytest.mark.slow
+def test_adhesionless_continuation_that_cycles_starts_afresh():
+    """Adhesionless, ζ = 1e-2 continued from the ζ = 1 contact set (Broyden): a merged contact
+    carries tension (0.3 of the largest pressure), its split parts merge again, endlessly (the
+    solve ran past 1000 s before). The cycle is detected, and since an adhesionless equilibrium
+    does not depend on the path the solve restarts from first touch: the same answer as a solve
+    from first touch."""
+    from viscocontact.solvers import Broyden
+
+    prob = attrs.evolve(_problem(0, mean_pressure=0.3, zeta=1.0), solver=Broyden())
+    start = prob.solve()
+    fresh = attrs.evolve(prob, zeta=1e-2).solve()
+    r = attrs.evolve(prob, zeta=1e-2).solve(initial=start)
+    assert start.converged and fresh.converged and r.converged, r.message
+    assert r.area == pytest.approx(fresh.area, rel=1e-6) and r.n_contacts == fresh.n_contacts
+    events = r.extras["events"]
+    assert any("parts it is split into merge again" in e and "solved from first touch" in e
+               for e in events)
