@@ -146,6 +146,9 @@ def _add_study_options(parser: argparse.ArgumentParser, kind: str) -> None:
     parser.add_argument("--scheduler", metavar="ADDRESS", default=None,
                         help="send the points to this Dask distributed scheduler "
                              "(pip install 'viscocontact[distributed]')")
+    parser.add_argument("--time-limit", metavar="SECONDS", type=float, default=None,
+                        help="seconds allowed to one point; a point past it is stored as an "
+                             "error and its chain goes on (default: no limit)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--plot", action="store_true", help="also draw the PNG figures")
 
@@ -173,8 +176,10 @@ def _run_study_file(args, kind: str, build) -> int:
 
     from .studies import resume, run
 
+    if args.time_limit is not None and not 0 < args.time_limit < float("inf"):
+        raise ValidationError("--time-limit", args.time_limit, "a finite number of seconds > 0")
     options = dict(workers=args.workers, scheduler=args.scheduler,
-                   progress=None if args.quiet else sys.stderr)
+                   progress=None if args.quiet else sys.stderr, time_limit=args.time_limit)
     if args.scene is None:
         if not (args.resume and args.out):
             raise ValidationError("SCENE.toml", None, "a scene file (or --resume --out FILE.h5 "

@@ -116,6 +116,10 @@ def test_bad_sweep_input(tmp_path, scene, capsys):
     assert main(["sweep", str(scene), "--zetas", "1", "--seeds", "0:2",
                  "--out", str(tmp_path / "x.h5")]) == 2
     assert "profile.seed" in capsys.readouterr().err
+    for bad in ("0", "-5", "inf", "nan"):
+        assert main(["sweep", str(scene), "--zetas", "1", "--time-limit", bad,
+                     "--out", str(tmp_path / "x.h5")]) == 2
+        assert "--time-limit" in capsys.readouterr().err
     assert main(["plot", str(tmp_path / "missing.h5")]) == 2
     assert "no such file" in capsys.readouterr().err
 

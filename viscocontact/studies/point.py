@@ -75,8 +75,13 @@ class PointSpec:
     labels: Mapping[str, Any] = attrs.field(factory=dict)
 
 
+class PointTimeout(Exception):
+    """A point ran past the study's time limit."""
+
+
 def solve_point(scene: Mapping[str, Any], spec: PointSpec,
-                initial: np.ndarray | None = None) -> dict[str, Any]:
+                initial: np.ndarray | None = None,
+                time_limit: float | None = None) -> dict[str, Any]:
     """Solve one point; never raises for a failing solve.
 
     Parameters
@@ -87,6 +92,10 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     initial : ndarray or None
         Contact set to start from, shape ``(n, 2)`` or flat ``(2n,)``; an empty array starts from
         no contact, ``None`` follows the approach path from first touch.
+    time_limit : float or None
+        Seconds of wall time after which the solve is abandoned and the point recorded as an
+        error with the reason (``SIGALRM``: enforced in the main thread of a process, i.e. the
+        serial runner and worker processes, not in a Dask worker's threads).
 
     Returns
     -------
@@ -97,8 +106,11 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
 
     t0 = time.perf_counter()
     record = _skeleton(scene, spec)
+    from .._alarm import time_limit as limit
+
     try:
-        with single_blas_thread():
+        with single_blas_thread(), limit(time_limit, lambda: PointTimeout(
+                f"time limit of {time_limit:g} s reached")):
             result = _solve(scene, spec, initial)
     except Exception as exc:  # stored with its reason; the study goes on
         record.update(status=ERROR, converged=False, message=f"{type(exc).__name__}: {exc}")

@@ -14,7 +14,8 @@ from .progress import Progress
 
 
 def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = False,
-        overwrite: bool = False, progress: TextIO | None = sys.stderr) -> StudyData:
+        overwrite: bool = False, progress: TextIO | None = sys.stderr,
+        time_limit: float | None = None) -> StudyData:
     """Compute a study into the HDF5 file ``path`` and return what the file holds.
 
     Parameters
@@ -33,6 +34,10 @@ def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = 
         Replace an existing file. Without ``resume`` or ``overwrite`` an existing file is an error.
     progress : file or None
         Where the progress bar goes (default stderr; None: silent).
+    time_limit : float or None
+        Seconds allowed to one point; a point past it is stored as an error ("time limit of
+        ... s reached") and its chain goes on from the last converged point (enforced in this
+        process and in worker processes, not on a Dask scheduler's threads).
 
     Notes
     -----
@@ -40,10 +45,14 @@ def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = 
     each from the previous point's contact set (see :mod:`~viscocontact.studies.parallel`). A
     point is appended to the file as soon as it is back, whatever the order in which chains finish.
     """
-    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
-        from ..errors import ValidationError
+    from ..errors import ValidationError
 
+    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
         raise ValidationError("workers", workers, "an integer >= 1")
+    if time_limit is not None and (isinstance(time_limit, bool)
+                                   or not isinstance(time_limit, (int, float))
+                                   or not time_limit > 0 or time_limit == float("inf")):
+        raise ValidationError("time_limit", time_limit, "a finite number of seconds > 0, or None")
     path = Path(path)
     if path.exists() and resume:
         header = storage.read_header(path)
@@ -67,7 +76,7 @@ def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = 
         def submit(chain):
             nxt = study.next_point(chain, records[chain.index])
             if nxt is not None:
-                pending[pool.submit(solve_point, *nxt)] = chain
+                pending[pool.submit(solve_point, *nxt, time_limit)] = chain
 
         for chain in chains:
             submit(chain)

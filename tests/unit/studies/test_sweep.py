@@ -104,3 +104,27 @@ def test_realizations_of_a_single_mode_profile_agree(tmp_path, mesh):
     assert band.count.tolist() == [[[2, 2]]]
     assert np.allclose(band.upper, band.mean, rtol=1e-5) and np.all(band.upper >= band.lower)
     assert data.points["control"].tolist() == ["penetration"] * 4
+
+
+def test_time_limit_stores_the_point_as_an_error_and_the_chain_goes_on(tmp_path, adhesive,
+                                                                       adhesionless, mesh):
+    """A point past the time limit is an error with its reason; the next point of the chain
+    is still computed. 1 ms is far below an adhesive first touch (a second or more); the
+    adhesionless twin solved with a generous limit is unaffected."""
+    sweep = Sweep(scene=adhesive, zetas=[1.0, 10.0], pair=False, discretization=mesh)
+    data = run(sweep, tmp_path / "s.h5", progress=None, time_limit=1e-3)
+    p = data.points
+    assert len(p["status"]) == 2
+    assert all(m == "PointTimeout: time limit of 0.001 s reached" for m in p["message"])
+    assert not p["converged"].any()
+    ok = run(Sweep(scene=adhesionless, zetas=[1.0], discretization=mesh), tmp_path / "t.h5",
+             progress=None, time_limit=600.0)
+    assert ok.points["converged"].all()
+
+
+@pytest.mark.parametrize("limit", [0.0, -1.0, float("nan"), float("inf"), "10", True])
+def test_bad_time_limit(tmp_path, adhesionless, limit):
+    with pytest.raises(ValidationError) as info:
+        run(Sweep(scene=adhesionless, zetas=[1.0]), tmp_path / "s.h5", progress=None,
+            time_limit=limit)
+    assert info.value.field == "time_limit"
