@@ -96,6 +96,10 @@ def _configure_solve(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--explain", action="store_true",
                         help="print the solve plan (what is computed, what is skipped and why) "
                              "and exit without solving")
+    parser.add_argument("--kernel-tolerance", metavar="TOL", type=float, default=None,
+                        help="take memory branches in their relaxed or frozen limit when that "
+                             "changes the kernel by at most TOL (0 < TOL <= 1e-2; default: only "
+                             "outside ζ_i in [1e-12, 1e12])")
 
 
 def _run_solve(args: argparse.Namespace) -> int:
@@ -107,6 +111,11 @@ def _run_solve(args: argparse.Namespace) -> int:
     options = {}
     if args.elements is not None:
         options["discretization"] = Discretization(elements=args.elements)
+    if args.kernel_tolerance is not None:
+        if not 0 < args.kernel_tolerance <= 1e-2:
+            raise ValidationError("--kernel-tolerance", args.kernel_tolerance,
+                                  "a number in (0, 1e-2]")
+        options["kernel_tolerance"] = args.kernel_tolerance
     problem = ContactProblem.from_scene(scene, **options)
     if args.explain:
         plan = problem.plan()

@@ -128,6 +128,16 @@ def test_cli_explain_prints_the_plan_without_solving(tmp_path, capsys):
     assert main(["solve", str(scene), "--explain", "--json"]) == 0
     steps = json.loads(capsys.readouterr().out)
     assert [s["stage"] for s in steps][:3] == ["kernel", "mean displacement", "layer series"]
+    glassy = tmp_path / "g.toml"
+    glassy.write_text(scene.read_text(encoding="utf-8").replace("zeta = 1.0", "zeta = 1e8"),
+                      encoding="utf-8")
+    assert main(["solve", str(glassy), "--explain"]) == 0
+    assert "memory table" in capsys.readouterr().out.splitlines()[0]
+    assert main(["solve", str(glassy), "--explain", "--kernel-tolerance", "1e-6"]) == 0
+    assert "elastic with E∞" in capsys.readouterr().out.splitlines()[0]
+    for bad in ("0", "0.5", "nan"):
+        assert main(["solve", str(glassy), "--kernel-tolerance", bad]) == 2
+        assert "--kernel-tolerance" in capsys.readouterr().err
 
 
 # ---- the stiffness scale of the edge residual tolerance ----------------------------------------
