@@ -341,6 +341,7 @@ class _Run:
         tol = problem.tolerances
         self.tolerances = attrs.evolve(tol, residual=tol.residual * residual_scale(prep.kernel))
         self._noise: dict[int, float] = {}        # round-off floor of the residuals per edge count
+        self._tension = 0.0                         # largest tension of a split, for its event
 
     # ---- checks -----------------------------------------------------------------------------
     def grid(self):
@@ -388,7 +389,7 @@ class _Run:
             inner = np.zeros(s.shape, bool)
             inner[3:-3] = s[3:-3] > 1e-6 * scale
             if inner.any():
-                self._tension = max(getattr(self, "_tension", 0.0), float(np.max(s[3:-3])) / scale)
+                self._tension = max(self._tension, float(np.max(s[3:-3])) / scale)
                 idx = np.flatnonzero(inner)
                 lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
                 out += [mesh.edges[2 * j], lo, hi, mesh.edges[2 * j + 1]]
@@ -621,7 +622,9 @@ class _Run:
         goal = target["mean_pressure"]
         state, step = out, 0.125 * self.disc.path_step
         p_prev = out[2].mean_pressure
-        while step >= 1e-6 * self.disc.path_step:
+        for _ in range(400):                            # a guard; the march ends well before
+            if step < 1e-6 * self.disc.path_step:
+                break
             d_next = state[2].penetration - step
             trial = self.equilibrate(state[1], {"penetration": d_next}, budget=APPROACH_BUDGET)
             if trial[0] != "converged":
