@@ -351,10 +351,7 @@ class _Run:
     def check_x(self):
         """Where interpenetration is checked: the uniform grid and every local maximum of the
         profile, so that a contact narrower than the grid spacing is still born."""
-        maxima = getattr(self.prep.shape.profile, "local_maxima", None)
-        if maxima is None:          # a duck-typed profile that is not a Profile subclass
-            return self.grid()
-        peaks = self.origin + np.mod(np.asarray(maxima(), float) - self.origin, TWO_PI)
+        peaks = self.origin + np.mod(self.prep.shape.maxima - self.origin, TWO_PI)
         return np.unique(np.concatenate([self.grid(), peaks]))
 
     def gap_outside(self, fields):

@@ -28,11 +28,16 @@ class NormalizedProfile:
     profile: object
     amplitude: float          # Λ̃ = q0 Λ
     peak_position: float
+    #: local maxima of the profile (:meth:`Profile.local_maxima`; empty for a duck-typed profile
+    #: without it), computed once with the rest of the prepared tables
+    maxima: np.ndarray = attrs.field(factory=lambda: np.zeros(0))
 
     @classmethod
     def of(cls, profile) -> "NormalizedProfile":
         xp, lam = profile.peak()
-        return cls(profile=profile, amplitude=float(lam), peak_position=float(xp))
+        maxima = getattr(profile, "local_maxima", None)
+        return cls(profile=profile, amplitude=float(lam), peak_position=float(xp),
+                   maxima=np.zeros(0) if maxima is None else np.asarray(maxima(), float))
 
     def heights(self, x):
         """``r̃(x̃) = r/Λ``."""

@@ -150,7 +150,10 @@ def test_residual_scale_lies_between_relaxed_and_glassy_stiffness(beta, log_zeta
 
     sls = StandardLinearSolid(beta=beta)
     s = residual_scale(HalfPlane().prepare(sls, 10.0**log_zeta))
-    assert 1.0 <= s <= beta * (1 + 1e-12)
+    zeta = 10.0**log_zeta          # SLS: K(1) = 1/β + (1 - 1/β)/(1 - iζ) in E0 units
+    assert s == pytest.approx(max(1.0, 1.0 / abs(1 / beta + (1 - 1 / beta) / (1 - 1j * zeta))),
+                              rel=1e-12)
+    assert s <= beta * (1 + 1e-12)
     assert s <= residual_scale(HalfPlane().prepare(sls, 10.0**(log_zeta + 1))) * (1 + 1e-12)
     assert residual_scale(HalfPlane().prepare(sls, 0.0)) == pytest.approx(1.0)
     assert residual_scale(HalfPlane().prepare(sls, 1e12)) == pytest.approx(beta, rel=1e-9)
