@@ -45,8 +45,14 @@ class ProfileStatistics:
     kurtosis: float
 
 
-def sampled_maxima(r: np.ndarray) -> np.ndarray:
-    """Local maxima of periodic samples ``r`` on ``x_j = 2πj/n`` (parabolic vertex, sorted)."""
+def sampled_maxima(r: np.ndarray, s: np.ndarray | None = None) -> np.ndarray:
+    """Local maxima of periodic samples ``r`` on ``x_j = 2πj/n`` (parabolic vertex, sorted).
+
+    With the slopes ``s`` sampled on the same grid, every fall of the slope from + to - between
+    two samples is a maximum as well (at the linear zero of the slope) unless a vertex already
+    lies within a sample of it: a shoulder can hold a maximum-minimum pair closer than one sample
+    that the heights alone do not show.
+    """
     n = len(r)
     h = TWO_PI / n
     left, right = np.roll(r, 1), np.roll(r, -1)
@@ -54,7 +60,16 @@ def sampled_maxima(r: np.ndarray) -> np.ndarray:
     curv = left[i] - 2.0 * r[i] + right[i]
     with np.errstate(divide="ignore", invalid="ignore"):
         shift = np.where(curv < 0, 0.5 * (left[i] - right[i]) / curv, 0.0)
-    x = np.mod((i + np.clip(shift, -0.5, 0.5)) * h, TWO_PI)
+    x = (i + np.clip(shift, -0.5, 0.5)) * h
+    if s is not None:
+        nxt = np.roll(s, -1)
+        j = np.flatnonzero((s > 0) & (nxt <= 0))
+        xs = (j + s[j] / (s[j] - nxt[j])) * h
+        if len(x):
+            gap = np.abs(np.angle(np.exp(1j * (xs[:, None] - x[None, :])))).min(axis=1)
+            xs = xs[gap > h]
+        x = np.concatenate([x, xs])
+    x = np.mod(x, TWO_PI)
     return np.sort(np.where(x >= TWO_PI, 0.0, x))       # mod of -1e-17 rounds to 2π
 
 
@@ -100,9 +115,10 @@ class Profile(abc.ABC):
         """Sorted positions in ``[0, 2π)`` of the local maxima of the heights: where contacts are
         born, however narrow (the interpenetration check samples the gap there as well as on its
         uniform grid). Default: the maxima of 8192 samples, each refined by the vertex of the
-        parabola through it and its neighbours. Override when features are finer than that."""
+        parabola through it and its neighbours, and the falls of the sampled slope between them
+        (see :func:`sampled_maxima`). Override when features are finer than that."""
         x = np.linspace(0.0, TWO_PI, 8192, endpoint=False)
-        return sampled_maxima(self.heights(x))
+        return sampled_maxima(self.heights(x), self.slopes(x))
 
     @property
     def amplitude(self) -> float:

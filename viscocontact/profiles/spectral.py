@@ -207,7 +207,8 @@ class SpectralProfile(Profile):
     def local_maxima(self) -> np.ndarray:
         """Local maxima from ``n >= 16 k_max`` FFT samples (see :meth:`Profile.local_maxima`)."""
         kmax = int(self.modes.wavenumbers[-1])
-        return sampled_maxima(self.grid_values(1 << max(13, math.ceil(math.log2(16 * kmax)))))
+        n = 1 << max(13, math.ceil(math.log2(16 * kmax)))
+        return sampled_maxima(self.grid_values(n), self.grid_values(n, derivative=1))
 
     def peak(self) -> tuple[float, float]:
         """``(x̃_peak, Λ̃)``: position in ``[0, 2π)`` and value of the global maximum of ``q0·r``.

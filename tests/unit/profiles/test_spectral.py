@@ -4,7 +4,7 @@ from __future__ import annotations
 import attrs
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from viscocontact import ValidationError
@@ -193,6 +193,7 @@ def test_grid_values_rejects_bad_n():
 # ---- local maxima (where contacts are born) ----------------------------------------------------
 @settings(max_examples=40, deadline=None)
 @given(p=self_affine_profiles(max_scales=128))
+@example(p=SelfAffineProfile(hurst=0.484375, scales=95, rms=1.0, seed=95, rolloff=31.5625))
 def test_local_maxima_are_maxima_and_include_the_peak(p):
     """Every reported maximum has zero slope to sampling accuracy and negative curvature or a
     flat top; the global peak is among them; sorted in [0, 2π)."""
@@ -203,15 +204,22 @@ def test_local_maxima_are_maxima_and_include_the_peak(p):
     kmax = p.modes.wavenumbers[-1]
     n = 1 << max(13, int(np.ceil(np.log2(16 * kmax))))
     h = TWO_PI / n
-    # within half a sample of a zero of the slope: the slope changes sign across m ± h
-    assert np.all(p.slopes(m - h) >= -1e-12 * np.abs(p.slopes(m - h)).max())
-    assert np.all(p.slopes(m + h) <= 1e-12 * np.abs(p.slopes(m + h)).max())
+    # within a sample of a true maximum: the exact slope falls from + to - somewhere in m ± h
+    # (not necessarily across m ± h themselves: a shoulder can hold a minimum-maximum pair
+    # closer than one sample, seen with seed 95)
+    x = m[:, None] + h * np.linspace(-1.0, 1.0, 65)
+    s = p.slopes(x)
+    floor = 1e-12 * np.abs(s).max()
+    assert np.all(np.any((s[:, :-1] > -floor) & (s[:, 1:] <= floor), axis=1))
     xp, lam = p.peak()
     d = np.abs(np.angle(np.exp(1j * (m - xp))))
     assert d.min() <= h
-    # and no maximum is missed: the count equals the sign changes of the slope, + to -
+    # and no maximum is missed: every fall of the sampled slope from + to - has a reported
+    # maximum within a sample (the counts themselves may differ by sub-sample shoulders)
     s = p.grid_values(n, derivative=1)
-    assert len(m) == int(np.sum((s > 0) & (np.roll(s, -1) <= 0)))
+    falls = h * (np.flatnonzero((s > 0) & (np.roll(s, -1) <= 0)) + 0.5)
+    gap = np.abs(np.angle(np.exp(1j * (falls[:, None] - m[None, :])))).min(axis=1)
+    assert np.all(gap <= 1.5 * h)
 
 
 @pytest.mark.parametrize("k", [1, 7, 128])
