@@ -142,3 +142,16 @@ def test_usage_errors_exit_2(capsys):
     assert main([]) == 2
     assert main(["describe"]) == 2
     capsys.readouterr()
+
+
+def test_python_dash_m_runs_the_command_line():
+    """``python -m viscocontact`` is the ``viscocontact`` script (same output, same exit code)."""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "viscocontact", "describe", "--help"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0 and "usage: viscocontact describe" in done.stdout
+    bad = subprocess.run([sys.executable, "-m", "viscocontact", "solve", "no-such-scene.toml"],
+                         capture_output=True, text=True, timeout=120)
+    assert bad.returncode == 2 and "no-such-scene.toml" in bad.stderr

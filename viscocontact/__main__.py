@@ -1,0 +1,6 @@
+"""``python -m viscocontact``: the command line, as the ``viscocontact`` script."""
+import sys
+
+from .cli import main
+
+sys.exit(main())
