@@ -53,7 +53,10 @@ class ContactResult:
     fields : dict or None
         ``x``, ``pressure``, ``displacement``, ``gap`` arrays (on request).
     extras : dict
-        Solver diagnostics (residual history, timings, topology events).
+        Solver diagnostics: ``events`` (topology changes, refinements), ``residual_history``,
+        ``seconds`` and, for a solve that ends with contacts, ``conformity`` (the largest
+        departure of the discrete solid from the profile inside the contacts, between
+        collocation points, in units of the profile amplitude: a discretisation error).
     """
 
     area: float

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import functools
 
+import attrs
 import numpy as np
 
 from .fields import FieldSolution, NormalizedProfile, stress_intensity
@@ -117,12 +118,13 @@ class EdgeContext:
     """Edge quantities of one field solution (built by the orchestrator, read by adhesion models)."""
 
     def __init__(self, fields: FieldSolution, kernel, shape: NormalizedProfile, spec: MeshSpec,
-                 amplitude: float, zones=None):
+                 amplitude: float, zones=None, counts=None):
         self.fields = fields
         self.kernel = kernel
         self.shape = shape
         self.spec = spec
         self.zones = zones
+        self.counts = counts            # elements of each contact (None: spec.elements for all)
         self.amplitude = amplitude      # Λ̃
         self._sif = None
 
@@ -153,8 +155,15 @@ class EdgeContext:
             half = 0.5 * (e[1::2] - e[0::2])
             first = np.array([self.mesh.width[self.mesh.slice(j)][0]
                               for j in range(self.mesh.n_contacts)])
-            self._sif = raw / sif_calibration(self.spec, np.repeat(half, 2),
-                                              np.repeat(first / half, 2))
+            counts = np.repeat(self.counts if self.counts is not None
+                               else [self.spec.elements] * len(half), 2)
+            hw, rel = np.repeat(half, 2), np.repeat(first / half, 2)
+            ratio = np.empty_like(raw)
+            for n in np.unique(counts):
+                at = counts == n
+                ratio[at] = sif_calibration(attrs.evolve(self.spec, elements=int(n)), hw[at],
+                                            rel[at])
+            self._sif = raw / ratio
         return self._sif
 
     def stored_energy(self, fields: FieldSolution | None = None) -> float:
@@ -173,7 +182,7 @@ class EdgeContext:
 
         base = self.fields
         j = i // 2
-        mesh = build_mesh(outward(self.mesh.edges, i, dx), self.spec, self.zones)
+        mesh = build_mesh(outward(self.mesh.edges, i, dx), self.spec, self.zones, self.counts)
         sl = self.mesh.slice(j)
         k = self.kernel
         B = base.matrix.copy()

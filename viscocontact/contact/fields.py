@@ -31,13 +31,17 @@ class NormalizedProfile:
     #: local maxima of the profile (:meth:`Profile.local_maxima`; empty for a duck-typed profile
     #: without it), computed once with the rest of the prepared tables
     maxima: np.ndarray = attrs.field(factory=lambda: np.zeros(0))
+    #: shortest wavelength of the heights (:attr:`Profile.shortest_wavelength`; ``None``: unknown)
+    wavelength: float | None = None
 
     @classmethod
     def of(cls, profile) -> "NormalizedProfile":
         xp, lam = profile.peak()
         maxima = getattr(profile, "local_maxima", None)
+        wavelength = getattr(profile, "shortest_wavelength", None)
         return cls(profile=profile, amplitude=float(lam), peak_position=float(xp),
-                   maxima=np.zeros(0) if maxima is None else np.asarray(maxima(), float))
+                   maxima=np.zeros(0) if maxima is None else np.asarray(maxima(), float),
+                   wavelength=None if wavelength is None else float(wavelength))
 
     def heights(self, x):
         """``r̃(x̃) = r/Λ``."""

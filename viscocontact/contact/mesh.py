@@ -165,13 +165,21 @@ def graded_nodes(alpha: float, spec: MeshSpec, zone=None) -> np.ndarray:
     return out
 
 
-def zone_patterns(edges: np.ndarray, spec: MeshSpec) -> tuple:
+def contact_spec(spec: MeshSpec, counts, j: int) -> MeshSpec:
+    """The spec of contact ``j``: ``spec`` with ``counts[j]`` elements (``counts = None``: all
+    contacts have ``spec.elements``)."""
+    if counts is None or counts[j] == spec.elements:
+        return spec
+    return attrs.evolve(spec, elements=int(counts[j]))
+
+
+def zone_patterns(edges: np.ndarray, spec: MeshSpec, counts=None) -> tuple:
     """:func:`zone_pattern` of every contact ``[edges[2j], edges[2j+1]]`` (``False``: none, and
-    none is to be added while these zones are in use)."""
+    none is to be added while these zones are in use); ``counts``: elements of each contact."""
     edges = np.asarray(edges, dtype=float)
     out = []
     for j in range(len(edges) // 2):
-        zone = zone_pattern(0.5 * (edges[2 * j + 1] - edges[2 * j]), spec)
+        zone = zone_pattern(0.5 * (edges[2 * j + 1] - edges[2 * j]), contact_spec(spec, counts, j))
         out.append(False if zone is None else zone)
     return tuple(out)
 
@@ -212,15 +220,17 @@ class Mesh:
         return slice(int(idx[0]), int(idx[-1]) + 1)
 
 
-def build_mesh(edges: np.ndarray, spec: MeshSpec, zones=None) -> Mesh:
+def build_mesh(edges: np.ndarray, spec: MeshSpec, zones=None, counts=None) -> Mesh:
     """Mesh every contact ``[edges[2j], edges[2j+1]]`` as ``spec`` says (``zones``: the edge-zone
-    nodes of each contact, default :func:`zone_patterns`)."""
+    nodes of each contact, default :func:`zone_patterns`; ``counts``: the elements of each
+    contact, default ``spec.elements`` for all)."""
     edges = np.asarray(edges, dtype=float)
     lefts, rights, ids = [], [], []
     for j in range(len(edges) // 2):
         a, b = edges[2 * j], edges[2 * j + 1]
         alpha = 0.5 * (b - a)
-        z = 0.5 * (a + b) + graded_nodes(alpha, spec, None if zones is None else zones[j])
+        z = 0.5 * (a + b) + graded_nodes(alpha, contact_spec(spec, counts, j),
+                                         None if zones is None else zones[j])
         z[0], z[-1] = a, b
         lefts.append(z[:-1])
         rights.append(z[1:])

@@ -121,6 +121,16 @@ class Profile(abc.ABC):
         return sampled_maxima(self.heights(x), self.slopes(x))
 
     @property
+    def shortest_wavelength(self) -> float | None:
+        """Shortest wavelength (``x̃`` units) of the heights, or ``None`` when not known.
+
+        The contact solver sizes the elements inside a contact from it
+        (:attr:`~viscocontact.problem.Discretization.interior_resolution`); ``None`` leaves the
+        elements per contact as given. Spectral profiles return ``2π/k_max``.
+        """
+        return None
+
+    @property
     def amplitude(self) -> float:
         """``Λ̃ = q0·max r``."""
         return self.peak()[1]

@@ -169,6 +169,14 @@ class SpectralProfile(Profile):
     # -- moments and statistics --------------------------------------------------------------------
 
     @property
+    def shortest_wavelength(self) -> float:
+        """``2π/k_max``, ``k_max`` the highest wavenumber with a non-zero amplitude."""
+        modes = self.modes
+        nonzero = np.flatnonzero(modes.amplitudes != 0)
+        kmax = int(modes.wavenumbers[nonzero[-1]]) if nonzero.size else 1
+        return TWO_PI / kmax
+
+    @property
     def m0(self) -> float:
         """``<r²> = Σ a²/2`` (q0² units, eq. 3.12), exact."""
         return self.modes.moment(0)
