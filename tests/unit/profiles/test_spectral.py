@@ -230,3 +230,38 @@ def test_local_maxima_of_a_cosine(k):
     amp[-1] = 1.0
     p = MeasuredProfile(amplitudes=amp, phases=np.zeros(k), length=1.0)
     np.testing.assert_allclose(p.local_maxima(), 2 * np.pi * np.arange(k) / k, atol=1e-12)
+
+
+# ---- shortest wavelength (sizes the elements inside a contact) ------------------------------------
+@SETTINGS
+@given(k=st.lists(st.integers(1, 300), min_size=1, max_size=6, unique=True),
+       zero_last=st.booleans())
+def test_shortest_wavelength_is_that_of_the_highest_mode_with_amplitude(k, zero_last):
+    """``2π/k_max`` over the modes with a non-zero amplitude: a trailing zero mode does not count,
+    and the heights are unchanged by dropping it."""
+    k = sorted(k)
+    a = [1.0] * len(k)
+    if zero_last and len(k) > 1:
+        a[-1] = 0.0
+    p = Series(k=tuple(k), a=tuple(a), phi=(0.3,) * len(k))
+    m = len(k) - (a[-1] == 0.0)
+    assert p.shortest_wavelength == pytest.approx(TWO_PI / k[m - 1], rel=1e-15)
+    # the modes up to k_max reproduce the heights exactly
+    kept = Series(k=tuple(k[:m]), a=tuple(a[:m]), phi=(0.3,) * m)
+    x = np.linspace(0, TWO_PI, 64)
+    np.testing.assert_allclose(p.heights(x), kept.heights(x), atol=1e-12)
+
+
+def test_profiles_without_a_spectrum_do_not_report_a_wavelength():
+    """The base class does not know the wavelengths of arbitrary heights: the solver then keeps
+    the elements per contact as given."""
+    from viscocontact.profiles.base import Profile
+
+    class Bump(Profile):
+        def heights(self, x):
+            return np.exp(np.cos(x))
+
+        def slopes(self, x):
+            return -np.sin(x) * np.exp(np.cos(x))
+
+    assert Bump().shortest_wavelength is None

@@ -1,0 +1,61 @@
+"""The interior resolution of contacts: per-contact element counts and the rule that picks them."""
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from viscocontact.adhesion import NoAdhesion
+from viscocontact.contact.mesh import MeshSpec, build_mesh, clustered_nodes
+from viscocontact.problem import INTERIOR_CAP, ContactProblem, Discretization, _Run
+from viscocontact.profiles import SelfAffineProfile, Sinusoid
+from viscocontact.rheology import Elastic
+from viscocontact.solvers import Newton
+
+
+@settings(max_examples=40, deadline=None)
+@given(counts=st.lists(st.sampled_from([8, 16, 32, 64]), min_size=1, max_size=4))
+def test_build_mesh_gives_each_contact_its_count(counts):
+    """Contact j gets counts[j] elements that tile it exactly, left to right."""
+    edges = np.ravel([[1.0 * j, 1.0 * j + 0.4] for j in range(len(counts))])
+    mesh = build_mesh(edges, MeshSpec(elements=32), counts=tuple(counts))
+    for j, n in enumerate(counts):
+        sl = mesh.slice(j)
+        assert sl.stop - sl.start == n
+        assert mesh.left[sl][0] == edges[2 * j] and mesh.right[sl][-1] == edges[2 * j + 1]
+        np.testing.assert_allclose(mesh.right[sl][:-1], mesh.left[sl][1:], rtol=0, atol=0)
+
+
+def _run(profile, elements=32, resolution=8.0):
+    prob = ContactProblem(profile=profile, rheology=Elastic(), adhesion=NoAdhesion(),
+                          solver=Newton(), mean_pressure=0.3,
+                          discretization=Discretization(elements=elements,
+                                                        interior_resolution=resolution))
+    return _Run(prob, prob.prepare())
+
+
+@settings(max_examples=40, deadline=None)
+@given(widths=st.lists(st.floats(1e-3, 2.0), min_size=1, max_size=5))
+def test_counts_resolve_the_shortest_wavelength(widths):
+    """Every count is the base doubled just enough for the largest element to be <= λ_min/8
+    (or the cap); narrow contacts keep the base count."""
+    run = _run(SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=0))
+    target = 2 * np.pi / 50 / 8
+    edges = np.ravel([[3.0 * j, 3.0 * j + w] for j, w in enumerate(widths)])
+    counts = run.counts_for(edges) or (32,) * len(widths)
+    for w, n in zip(widths, counts):
+        largest = np.max(np.diff(clustered_nodes(w / 2, n, 1.0)))
+        assert largest <= target or n == INTERIOR_CAP
+        if n > 32:
+            assert np.max(np.diff(clustered_nodes(w / 2, n // 2, 1.0))) > target
+
+
+def test_a_sinusoid_and_a_switched_off_rule_keep_the_counts():
+    assert _run(Sinusoid(amplitude=0.1)).counts_for(np.array([-3.0, 3.0])) is None
+    rough = SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=0)
+    assert _run(rough, resolution=None).counts_for(np.array([0.0, 2.0])) is None
+    assert _run(rough).counts_for(np.array([0.0, 2.0])) == (256,)
+
+
+def test_interior_resolution_is_validated():
+    with pytest.raises(Exception, match="interior_resolution"):
+        Discretization(interior_resolution=0.5)
