@@ -90,16 +90,15 @@ def _geometry_steps(problem, kernel) -> list[PlanStep]:
 
 
 def _mesh_step(problem, spec, kernel) -> PlanStep:
-    from .problem import SMALLEST_RESOLVED
-
-    from .problem import INTERIOR_CAP
+    from .problem import INTERIOR_CAP, SMALLEST_RESOLVED
 
     disc = problem.discretization
     base = f"{disc.elements} clustered elements per contact (n = {disc.clustering:g})"
     wavelength = getattr(problem.profile, "shortest_wavelength", None)
     if disc.interior_resolution is not None and wavelength is not None:
+        finest = wavelength / disc.interior_resolution
         base += (f", doubled (up to {INTERIOR_CAP}) in a contact until its largest element is "
-                 f"<= λ_min/{disc.interior_resolution:g} = {wavelength / disc.interior_resolution:.3g}")
+                 f"<= λ_min/{disc.interior_resolution:g} = {finest:.3g}")
     if spec.smallest is None:
         if disc.edge_resolution is None:
             why = "edge zones switched off (edge_resolution = None)"
