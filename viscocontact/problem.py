@@ -340,6 +340,17 @@ class ContactProblem:
         return result
 
 
+def _inside(x, edges, closed: bool) -> np.ndarray:
+    """Which of the points ``x`` lie in a contact ``[edges[2j], edges[2j+1]]`` (periodic;
+    ``closed``: the edges count as inside)."""
+    inside = np.zeros(np.shape(x), bool)
+    for a, b in zip(edges[0::2], edges[1::2]):
+        for shift in (-TWO_PI, 0.0, TWO_PI):
+            xs = x + shift
+            inside |= ((xs >= a) & (xs <= b)) if closed else ((xs > a) & (xs < b))
+    return inside
+
+
 class _Run:
     """State of one solve (counters, events)."""
 
@@ -416,11 +427,7 @@ class _Run:
         :attr:`Discretization.interior_resolution`."""
         x = self.grid()
         mesh = fields.mesh
-        inside = np.zeros(x.shape, bool)
-        for j in range(mesh.n_contacts):
-            a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
-            for shift in (-TWO_PI, 0.0, TWO_PI):
-                inside |= (x + shift > a) & (x + shift < b)
+        inside = _inside(x, mesh.edges, closed=False)
         if not inside.any():
             return 0.0
         xs = x[inside]
@@ -931,11 +938,7 @@ class _Run:
         # inside the contacts the gap is zero by the contact condition (the discrete displacement
         # between collocation points differs from the profile by discretisation error only: the
         # result's extras["conformity"])
-        inside = np.zeros(x.shape, bool)
-        for j in range(mesh.n_contacts):
-            a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
-            for shift in (-TWO_PI, 0.0, TWO_PI):
-                inside |= (x + shift >= a) & (x + shift <= b)
+        inside = _inside(x, mesh.edges, closed=True)
         return {"x": x, "pressure": pres, "displacement": u, "gap": np.where(inside, 0.0, u - w)}
 
     def closed_stress(self):

@@ -5,6 +5,8 @@ from viscocontact.studies.progress import Progress
 
 
 class Clock:
+    """A clock set by hand: the tests check the text of the estimate, nothing is timed."""
+
     def __init__(self):
         self.t = 0.0
 
