@@ -370,26 +370,44 @@ class _Run:
         self.tolerances = attrs.evolve(tol, residual=tol.residual * residual_scale(prep.kernel))
         self._noise: dict[tuple, float] = {}      # round-off floor per (edges, elements)
         self._tension = 0.0                         # largest tension of a split, for its event
+        # (point, elements): a contact holding the point gets at least that many elements
+        self._refined: list[tuple[float, int]] = []
 
     # ---- mesh ---------------------------------------------------------------------------------
     def counts_for(self, edges) -> tuple | None:
         """Elements of each contact of an equilibrium solve starting from ``edges``: ``elements``
         doubled until the contact's largest element resolves the profile's shortest wavelength
-        (:attr:`Discretization.interior_resolution`), at most :data:`INTERIOR_CAP`; ``None``
-        when every contact keeps ``elements``."""
+        (:attr:`Discretization.interior_resolution`), at most :data:`INTERIOR_CAP`, and at least
+        the count recorded for any point of the contact by :meth:`refine_at`; ``None`` when
+        every contact keeps ``elements``."""
         spec, wavelength = self.spec, self.prep.shape.wavelength
         edges = np.asarray(edges, dtype=float)
-        if self.disc.interior_resolution is None or wavelength is None or edges.size < 2:
+        if edges.size < 2:
             return None
-        target = wavelength / self.disc.interior_resolution
+        target = (None if self.disc.interior_resolution is None or wavelength is None
+                  else wavelength / self.disc.interior_resolution)
         counts = []
-        for alpha in 0.5 * (edges[1::2] - edges[0::2]):
+        for a, b in zip(edges[0::2], edges[1::2]):
             n = spec.elements
-            while n < INTERIOR_CAP and (np.max(np.diff(clustered_nodes(alpha, n, spec.exponent)))
-                                        > target):
+            while (target is not None and n < INTERIOR_CAP
+                   and np.max(np.diff(clustered_nodes(0.5 * (b - a), n, spec.exponent))) > target):
                 n = min(2 * n, INTERIOR_CAP)
+            for point, m in self._refined:
+                if _inside(np.array([point]), (a, b), closed=True)[0]:
+                    n = max(n, m)
             counts.append(n)
         return None if all(n == spec.elements for n in counts) else tuple(counts)
+
+    def refine_at(self, points, counts) -> bool:
+        """Give the contacts holding ``points`` twice the elements they have (``counts``), at
+        most ``max(INTERIOR_CAP, elements)``; ``False`` when every one is at that cap already."""
+        cap = max(INTERIOR_CAP, self.spec.elements)
+        grew = False
+        for point, n in zip(points, counts):
+            if n < cap:
+                self._refined.append((float(point), min(2 * n, cap)))
+                grew = True
+        return grew
 
     # ---- checks -----------------------------------------------------------------------------
     def grid(self):
@@ -436,13 +454,15 @@ class _Run:
         return float(np.max(np.abs(u - w)))
 
     def tensile_split(self, fields):
-        """Split adhesionless contacts that carry tension inside (returns new edges or None)."""
+        """Split adhesionless contacts that carry tension inside: the new edges and, for each
+        contact split, its index and the middle of its tensile stretch (``None, []`` without
+        tension)."""
         if not isinstance(self.problem.adhesion, NoAdhesion):
-            return None
+            return None, []
         mesh = fields.mesh
         sig = fields.sigma
         scale = np.max(np.abs(sig)) if sig.size else 0.0
-        out, split = [], False
+        out, where = [], []
         for j in range(mesh.n_contacts):
             sl = mesh.slice(j)
             s = sig[sl]
@@ -453,10 +473,10 @@ class _Run:
                 idx = np.flatnonzero(inner)
                 lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
                 out += [mesh.edges[2 * j], lo, hi, mesh.edges[2 * j + 1]]
-                split = True
+                where.append((j, 0.5 * (lo + hi)))
             else:
                 out += [mesh.edges[2 * j], mesh.edges[2 * j + 1]]
-        return np.array(out) if split else None
+        return (np.array(out), where) if where else (None, [])
 
     # ---- equilibrium at one control value ---------------------------------------------------
     def equilibrate(self, edges, control, use_fallback: bool = True, budget: int | None = None):
@@ -541,13 +561,26 @@ class _Run:
                     return self.full_contact(control)
                 edges = merged
                 continue
-            split = self.tensile_split(fields)
-            if split is not None and sum(len(split) == len(y) and np.allclose(split, y, rtol=0,
-                                                                              atol=1e-3)
+            split, where = self.tensile_split(fields)
+            if split is not None and sum(len(split) == len(y)
+                                         and np.allclose(split, y, rtol=0, atol=1e-3)
                                          for y in splits) >= 2:
-                return ("not_converged", x, fields, ctx, float(np.max(np.abs(r))),
-                        "contact set cycles: a merged contact carries tension, and the parts it "
-                        "is split into merge again")
+                # split -> the parts merge -> the same tension, twice: the pressure nearly
+                # vanishes inside the contact and its sign is below what this mesh resolves
+                counts = system.counts or (self.spec.elements,) * (len(x) // 2)
+                if not self.refine_at([c for _, c in where], [counts[j] for j, _ in where]):
+                    return ("not_converged", x, fields, ctx, float(np.max(np.abs(r))),
+                            "contact set cycles: a merged contact carries tension, and the parts "
+                            "it is split into merge again, with "
+                            f"{max(INTERIOR_CAP, self.spec.elements)} elements in the contact")
+                self.events.append(
+                    "mesh refined in a contact whose tension and split alternate (up to "
+                    f"{max(m for _, m in self._refined)} elements): the sign of its smallest "
+                    "pressure was below the discretisation error")
+                self._tension = 0.0
+                splits.clear()
+                edges = x
+                continue
             if split is not None:
                 splits.append(split)
                 self.events.append("adhesionless contact split where it carried tension "

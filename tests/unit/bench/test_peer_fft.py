@@ -159,3 +159,54 @@ def test_wide_rough_contacts_follow_the_profile_and_agree_with_the_peer():
                                                               interior_resolution=None))
     # the same contact set on the uniform 32-element mesh: the widest contact is not followed
     assert coarse.solve(r).extras["conformity"] > 5 * r.extras["conformity"]
+
+
+# Seed 2, p̃∞ = 0.3: the eight contacts of the adhesionless equilibrium, rounded (an input).
+SEED2_CONTACTS = [2.4432, 2.6338, 2.7152, 2.7613, 3.1695, 3.2431, 4.0978, 4.1940,
+                  4.3253, 4.8201, 4.9963, 5.0019, 5.1723, 5.6363, 6.0081, 6.0824]
+
+
+def _seed2_problem(**disc):
+    from viscocontact.adhesion import NoAdhesion
+    from viscocontact.problem import Discretization
+    from viscocontact.rheology import Elastic
+    from viscocontact.solvers import Broyden
+
+    rough = SelfAffineProfile(hurst=0.8, scales=50, rms=0.010005, seed=2)
+    return rough, ContactProblem(profile=rough, rheology=Elastic(), mean_pressure=0.3,
+                                 solver=Broyden(), adhesion=NoAdhesion(),
+                                 discretization=Discretization(elements=32, **disc))
+
+
+def test_a_contact_with_a_nearly_vanishing_pressure_inside_is_refined_not_cycled():
+    """Seed 2, elastic, p̃∞ = 0.3: one contact, 0.46 wide, spans a valley where the peer's
+    pressure falls to 4e-4 of its largest value. With 64 elements there the BEM shows a tension
+    of 1e-3 of the largest pressure instead, the contact is split, and the parts merge again:
+    the sign of that pressure is below the discretisation error. The contact gets twice the
+    elements, and the solve converges to the peer's eight contacts, with no tension anywhere.
+    Before, this ended "not converged: contact set cycles"."""
+    rough, prob = _seed2_problem()
+    r = prob.solve(np.array(SEED2_CONTACTS), fields=True)
+    peer = pf.solve(rough, 0.3, 8192, tol=1e-9)
+    assert r.converged and peer.converged, r.message
+    events = r.extras["events"]
+    assert any(e.startswith("mesh refined in a contact whose tension") for e in events)
+    assert not any(e.startswith("no equilibrium from the given contact set") for e in events)
+    assert r.n_contacts == peer.n_contacts == 8
+    assert r.area == pytest.approx(peer.area, rel=1e-3)
+    assert r.min_gap >= 0
+    pressure = r.fields["pressure"]
+    assert pressure.min() >= -1e-6 * pressure.max()
+
+
+def test_a_cycling_contact_at_the_element_cap_is_reported_not_converged(monkeypatch):
+    """The same contact set with the refinement capped at the 64 elements the contact has: the
+    equilibrium solve reports the cycle instead of passing the state for converged."""
+    import viscocontact.problem as problem
+
+    monkeypatch.setattr(problem, "INTERIOR_CAP", 64)
+    _, prob = _seed2_problem()
+    status, *_, message = problem._Run(prob, prob.prepare()).equilibrate(
+        np.array(SEED2_CONTACTS), {"mean_pressure": 0.3})
+    assert status == "not_converged"
+    assert "contact set cycles" in message and "with 64 elements in the contact" in message
