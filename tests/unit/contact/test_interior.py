@@ -59,3 +59,18 @@ def test_a_sinusoid_and_a_switched_off_rule_keep_the_counts():
 def test_interior_resolution_is_validated():
     with pytest.raises(Exception, match="interior_resolution"):
         Discretization(interior_resolution=0.5)
+
+
+@settings(max_examples=30, deadline=None)
+@given(n_contacts=st.integers(1, 4), which=st.integers(0, 3), base=st.sampled_from([16, 32, 64]))
+def test_a_refined_point_doubles_only_the_contact_holding_it(n_contacts, which, base):
+    """``refine_at`` gives the contact holding the point twice its elements, periodically (the
+    point may be given a period away), and leaves the others alone; at the cap it refuses."""
+    which %= n_contacts
+    run = _run(Sinusoid(amplitude=0.1), elements=base)
+    edges = np.ravel([[1.5 * j, 1.5 * j + 0.3] for j in range(n_contacts)])
+    assert run.counts_for(edges) is None
+    assert run.refine_at([1.5 * which + 0.1 + 2 * np.pi], [base])
+    counts = run.counts_for(edges)
+    assert counts == tuple(2 * base if j == which else base for j in range(n_contacts))
+    assert not run.refine_at([0.1], [INTERIOR_CAP])
