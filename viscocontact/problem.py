@@ -586,8 +586,9 @@ class _Run:
                             f"{max(INTERIOR_CAP, self.spec.elements)} elements in the contact")
                 self.events.append(
                     "mesh refined in a contact whose tension and split alternate (up to "
-                    f"{max(m for _, m in self._refined)} elements): the sign of its smallest "
-                    "pressure was below the discretisation error")
+                    f"{max(m for _, m in self._refined)} elements): its tension, "
+                    f"{self._tension:.2g} of the largest pressure, is a nearly vanishing "
+                    "pressure whose sign the mesh does not resolve")
                 self._tension = 0.0
                 splits.clear()
                 edges = x
