@@ -484,13 +484,20 @@ class _Run:
         return (np.array(out), where) if where else (None, [])
 
     # ---- equilibrium at one control value ---------------------------------------------------
-    def equilibrate(self, edges, control, use_fallback: bool = True, budget: int | None = None):
+    def equilibrate(self, edges, control, use_fallback: bool = True, budget: int | None = None,
+                    refine: bool = True):
         """Equilibrium at one control value from ``edges`` (contact-set changes included).
 
         ``use_fallback = False`` skips the fallback march when the primary solver stops, and
         ``budget`` caps the residual evaluations of each solver call: the approach path uses both
         for its trial steps, since a solve that fails near a fold costs hundreds of evaluations
         while a halved step (and at the end :meth:`snap`) finds the jump anyway.
+
+        ``refine = False`` reports a contact whose small tension and split alternate as a cycle
+        instead of refining it (:data:`REFINED_TENSION`): the approach's intermediate steps,
+        where two contacts about to merge pass through a nearly vanishing pressure between them
+        for a moment; a halved step gets past it, and a refinement would stay for the rest of
+        the solve.
         """
         p = self.problem
         tolerances = self.tolerances
@@ -574,7 +581,7 @@ class _Run:
                 # the pressure nearly vanishes inside the contact, with a sign below what this
                 # mesh resolves: refine that contact
                 counts = system.counts or (self.spec.elements,) * (len(x) // 2)
-                if self._tension > REFINED_TENSION:
+                if self._tension > REFINED_TENSION or not refine:
                     return ("not_converged", x, fields, ctx, float(np.max(np.abs(r))),
                             "contact set cycles: a merged contact carries tension "
                             f"({self._tension:.2g} of the largest pressure), and the parts it is "
@@ -834,7 +841,7 @@ class _Run:
             # the fallback march only once the step is small enough for a fold to be likely
             trial = self.equilibrate(state[1], {"penetration": d_next},
                                      use_fallback=step < self.disc.path_step / 16,
-                                     budget=APPROACH_BUDGET)
+                                     budget=APPROACH_BUDGET, refine=d_next == d_end)
             if trial[0] == "converged":
                 state, d_prev = trial, d_next
                 step = min(step * 1.5, self.disc.path_step)

@@ -106,3 +106,23 @@ def test_adhesionless_continuation_that_cycles_starts_afresh():
     assert any("parts it is split into merge again" in e and "solved from first touch" in e
                for e in events)
     assert not any(e.startswith("mesh refined in a contact whose tension") for e in events)
+
+
+def test_nonlinear_cg_on_the_rough_adhesionless_case_reaches_broydens_equilibrium():
+    """Thesis rough profile (seed 0), adhesionless, ζ = 1e-2, p̃∞ = 0.3, from first touch: nonlinear
+    CG reaches the equilibrium Broyden reaches (7 contacts). On the way, contacts about to merge
+    pass through a nearly vanishing pressure between them; refining such a contact at an
+    intermediate load step (instead of halving the step) kept the refinement for the rest of
+    the path, which then ended in a cycle with 5 contacts (Ã = 1.439) for nonlinear CG."""
+    from viscocontact.adhesion import NoAdhesion
+    from viscocontact.solvers import Broyden, NonlinearCG
+
+    prob = attrs.evolve(_problem(0, mean_pressure=0.3, zeta=1e-2), adhesion=NoAdhesion(),
+                        profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.010005, seed=0))
+    ref = attrs.evolve(prob, solver=Broyden()).solve()
+    r = attrs.evolve(prob, solver=NonlinearCG()).solve()
+    assert ref.converged and r.converged, r.message
+    assert r.n_contacts == ref.n_contacts == 7
+    assert r.area == pytest.approx(ref.area, rel=1e-9)
+    assert not any(e.startswith("mesh refined in a contact whose tension")
+                   for e in r.extras["events"])
