@@ -87,12 +87,40 @@ def _run_plugins(args: argparse.Namespace) -> int:
 
 
 # ---- solve --------------------------------------------------------------------------------------
+def _add_interior_resolution(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--interior-resolution", metavar="R", default=None,
+        help="a contact's largest element is at most λ_min/R, λ_min the profile's shortest "
+             "wavelength (1 <= R <= 64, or 'none'; default 8). It does not scale with "
+             "--elements: for a mesh-convergence study scale both (e.g. 32 and 8, 64 and 16)")
+
+
+def _interior_resolution(args):
+    """``--interior-resolution`` as a number, ``None`` for 'none', or the missing marker."""
+    text = args.interior_resolution
+    if text is None:
+        return _UNSET
+    if text.strip().lower() == "none":
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not 1.0 <= value <= 64.0:
+        raise ValidationError("--interior-resolution", text, "a number in [1, 64], or 'none'")
+    return value
+
+
+_UNSET = object()
+
+
 def _configure_solve(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("scene", metavar="SCENE.toml", help="scene file")
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
     parser.add_argument("--fields", action="store_true",
                         help="include pressure, displacement and gap on the check grid")
     parser.add_argument("--elements", type=int, default=None, help="elements per contact")
+    _add_interior_resolution(parser)
     parser.add_argument("--explain", action="store_true",
                         help="print the solve plan (what is computed, what is skipped and why) "
                              "and exit without solving")
@@ -109,8 +137,9 @@ def _run_solve(args: argparse.Namespace) -> int:
 
     scene = Scene.from_toml(_path(args.scene))
     options = {}
-    if args.elements is not None:
-        options["discretization"] = Discretization(elements=args.elements)
+    disc = _discretization(args)
+    if disc is not None:
+        options["discretization"] = Discretization(**disc)
     if args.kernel_tolerance is not None:
         if not 0 < args.kernel_tolerance <= 1e-2:
             raise ValidationError("--kernel-tolerance", args.kernel_tolerance,
@@ -145,6 +174,7 @@ def _add_study_options(parser: argparse.ArgumentParser, kind: str) -> None:
     parser.add_argument("--fields", action="store_true",
                         help="also store pressure, displacement and gap of every point")
     parser.add_argument("--elements", type=int, default=None, help="elements per contact")
+    _add_interior_resolution(parser)
     parser.add_argument("--out", metavar="FILE.h5", default=None,
                         help=f"study file (default: <scene name>_{kind}.h5 in this folder)")
     parser.add_argument("--resume", action="store_true",
@@ -176,7 +206,12 @@ def _seeds(args):
 
 
 def _discretization(args):
-    return None if args.elements is None else {"elements": args.elements}
+    """The ``Discretization`` fields the command line sets (None: the defaults)."""
+    disc = {} if args.elements is None else {"elements": args.elements}
+    resolution = _interior_resolution(args)
+    if resolution is not _UNSET:
+        disc["interior_resolution"] = resolution
+    return disc or None
 
 
 def _run_study_file(args, kind: str, build) -> int:

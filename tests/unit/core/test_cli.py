@@ -155,3 +155,21 @@ def test_python_dash_m_runs_the_command_line():
     bad = subprocess.run([sys.executable, "-m", "viscocontact", "solve", "no-such-scene.toml"],
                          capture_output=True, text=True, timeout=120)
     assert bad.returncode == 2 and "no-such-scene.toml" in bad.stderr
+
+
+@pytest.mark.parametrize("value,fragment", [("16", "λ_min/16 = 0.00785"), ("none", None)])
+def test_interior_resolution_reaches_the_mesh(capsys, value, fragment):
+    """``--interior-resolution`` sets the rule the plan reports ('none' switches it off)."""
+    code, out, _ = run(capsys, "solve", str(EXAMPLES / "thesis_rough.toml"), "--elements", "32",
+                       "--interior-resolution", value, "--explain")
+    mesh = next(line for line in out.splitlines() if line.startswith("mesh"))
+    assert code == 0
+    assert (fragment in mesh) if fragment else ("λ_min" not in mesh)
+
+
+@pytest.mark.parametrize("value", ["0.5", "65", "abc", "nan"])
+def test_bad_interior_resolution_names_the_option_and_range(capsys, value):
+    code, _, err = run(capsys, "solve", str(EXAMPLES / "thesis_rough.toml"),
+                       "--interior-resolution", value, "--explain")
+    assert code == 2
+    assert "--interior-resolution" in err and "[1, 64], or 'none'" in err
