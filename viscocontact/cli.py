@@ -87,6 +87,9 @@ def _run_plugins(args: argparse.Namespace) -> int:
 
 
 # ---- solve --------------------------------------------------------------------------------------
+_UNSET = object()       # an option left out (unlike ``None``, which some options take as a value)
+
+
 def _add_interior_resolution(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--interior-resolution", metavar="R", default=None,
@@ -109,9 +112,6 @@ def _interior_resolution(args):
     if not 1.0 <= value <= 64.0:
         raise ValidationError("--interior-resolution", text, "a number in [1, 64], or 'none'")
     return value
-
-
-_UNSET = object()
 
 
 def _configure_solve(parser: argparse.ArgumentParser) -> None:
