@@ -87,9 +87,6 @@ def _run_plugins(args: argparse.Namespace) -> int:
 
 
 # ---- solve --------------------------------------------------------------------------------------
-_UNSET = object()       # an option left out (unlike ``None``, which some options take as a value)
-
-
 def _add_interior_resolution(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--interior-resolution", metavar="R", default=None,
@@ -98,11 +95,8 @@ def _add_interior_resolution(parser: argparse.ArgumentParser) -> None:
              "--elements: for a mesh-convergence study scale both (e.g. 32 and 8, 64 and 16)")
 
 
-def _interior_resolution(args):
-    """``--interior-resolution`` as a number, ``None`` for 'none', or the missing marker."""
-    text = args.interior_resolution
-    if text is None:
-        return _UNSET
+def _interior_resolution(text: str) -> float | None:
+    """``--interior-resolution``: a number in [1, 64], or ``None`` for 'none'."""
     if text.strip().lower() == "none":
         return None
     try:
@@ -208,9 +202,8 @@ def _seeds(args):
 def _discretization(args):
     """The ``Discretization`` fields the command line sets (None: the defaults)."""
     disc = {} if args.elements is None else {"elements": args.elements}
-    resolution = _interior_resolution(args)
-    if resolution is not _UNSET:
-        disc["interior_resolution"] = resolution
+    if args.interior_resolution is not None:
+        disc["interior_resolution"] = _interior_resolution(args.interior_resolution)
     return disc or None
 
 

@@ -24,7 +24,8 @@ from .adhesion.base import AdhesionModel
 from .adhesion.none import NoAdhesion
 from .contact.edges import EdgeContext
 from .contact.fields import NormalizedProfile, displacement, friction, solve_fields
-from .contact.mesh import MeshSpec, build_mesh, clustered_nodes, zone_patterns
+from .contact.mesh import (MeshSpec, build_mesh, clustered_nodes, element_counts,
+                           zone_patterns)
 from .contact.topology import TWO_PI, TopologyChange, negative_regions, repair
 from .kernels.half_plane import HalfPlane
 from .result import ContactResult, SolveStatus
@@ -378,7 +379,6 @@ class _Run:
         tol = problem.tolerances
         self.tolerances = attrs.evolve(tol, residual=tol.residual * residual_scale(prep.kernel))
         self._noise: dict[tuple, float] = {}      # round-off floor per (edges, elements)
-        self._tension = 0.0                         # largest tension of a split, for its event
         # (point, elements): a contact holding the point gets at least that many elements
         self._refined: list[tuple[float, int]] = []
 
@@ -447,45 +447,47 @@ class _Run:
         w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
         return xs, u - w
 
-    def conformity(self, fields) -> float:
+    def conformity(self, fields, grid_displacement=None) -> float:
         """Largest ``|ũ - w|`` at the check grid's points inside the contacts: how far the
         discrete solid departs from the profile between collocation points (zero at them), in
         units of the profile amplitude. A discretisation error; see
-        :attr:`Discretization.interior_resolution`."""
+        :attr:`Discretization.interior_resolution`. ``grid_displacement``: ``ũ`` on the whole
+        check grid when it is at hand (:meth:`fields_on_grid`)."""
         x = self.grid()
         mesh = fields.mesh
         inside = _inside(x, mesh.edges, closed=False)
         if not inside.any():
             return 0.0
         xs = x[inside]
-        u = displacement(self.prep.kernel, mesh, fields.sigma, xs)
+        u = (displacement(self.prep.kernel, mesh, fields.sigma, xs) if grid_displacement is None
+             else grid_displacement[inside])
         w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
         return float(np.max(np.abs(u - w)))
 
     def tensile_split(self, fields):
-        """Split adhesionless contacts that carry tension inside: the new edges and, for each
-        contact split, its index and the middle of its tensile stretch (``None, []`` without
-        tension)."""
+        """Split adhesionless contacts that carry tension inside: the new edges, for each
+        contact split its index and the middle of its tensile stretch, and the largest tension
+        as a fraction of the largest pressure (``None, [], 0.0`` without tension)."""
         if not isinstance(self.problem.adhesion, NoAdhesion):
-            return None, []
+            return None, [], 0.0
         mesh = fields.mesh
         sig = fields.sigma
         scale = np.max(np.abs(sig)) if sig.size else 0.0
-        out, where = [], []
+        out, where, tension = [], [], 0.0
         for j in range(mesh.n_contacts):
             sl = mesh.slice(j)
             s = sig[sl]
             inner = np.zeros(s.shape, bool)
             inner[3:-3] = s[3:-3] > 1e-6 * scale
             if inner.any():
-                self._tension = max(self._tension, float(np.max(s[3:-3])) / scale)
+                tension = max(tension, float(np.max(s[3:-3])) / scale)
                 idx = np.flatnonzero(inner)
                 lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
                 out += [mesh.edges[2 * j], lo, hi, mesh.edges[2 * j + 1]]
                 where.append((j, 0.5 * (lo + hi)))
             else:
                 out += [mesh.edges[2 * j], mesh.edges[2 * j + 1]]
-        return (np.array(out), where) if where else (None, [])
+        return (np.array(out), where, tension) if where else (None, [], 0.0)
 
     # ---- equilibrium at one control value ---------------------------------------------------
     def equilibrate(self, edges, control, use_fallback: bool = True, budget: int | None = None,
@@ -577,18 +579,18 @@ class _Run:
                     return self.full_contact(control)
                 edges = merged
                 continue
-            split, where = self.tensile_split(fields)
+            split, where, tension = self.tensile_split(fields)
             if split is not None and sum(len(split) == len(y)
                                          and np.allclose(split, y, rtol=0, atol=1e-3)
                                          for y in splits) >= 2:
                 # split -> the parts merge -> the same tension, twice. A small tension means
                 # the pressure nearly vanishes inside the contact, with a sign below what this
                 # mesh resolves: refine that contact
-                counts = system.counts or (self.spec.elements,) * (len(x) // 2)
-                if self._tension > REFINED_TENSION or not refine:
+                counts = element_counts(self.spec, system.counts, len(x) // 2)
+                if tension > REFINED_TENSION or not refine:
                     return ("not_converged", x, fields, ctx, float(np.max(np.abs(r))),
                             "contact set cycles: a merged contact carries tension "
-                            f"({self._tension:.2g} of the largest pressure), and the parts it is "
+                            f"({tension:.2g} of the largest pressure), and the parts it is "
                             "split into merge again")
                 if not self.refine_at([c for _, c in where], [counts[j] for j, _ in where]):
                     return ("not_converged", x, fields, ctx, float(np.max(np.abs(r))),
@@ -598,17 +600,15 @@ class _Run:
                 self.events.append(
                     "mesh refined in a contact whose tension and split alternate (up to "
                     f"{max(m for _, m in self._refined)} elements): its tension, "
-                    f"{self._tension:.2g} of the largest pressure, is a nearly vanishing "
+                    f"{tension:.2g} of the largest pressure, is a nearly vanishing "
                     "pressure whose sign the mesh does not resolve")
-                self._tension = 0.0
                 splits.clear()
                 edges = x
                 continue
             if split is not None:
                 splits.append(split)
                 self.events.append("adhesionless contact split where it carried tension "
-                                   f"(up to {self._tension:.2g} of the largest pressure)")
-                self._tension = 0.0
+                                   f"(up to {tension:.2g} of the largest pressure)")
                 edges = split
                 continue
             finer = self.counts_for(x)
@@ -957,8 +957,9 @@ class _Run:
             mu = friction(mesh, fields.sigma, self.prep.shape, pm)
             terms = adh.edge_terms(ctx) if kind == "converged" else None
             xs, gap = self.gap_outside(fields)
-            extras["conformity"] = self.conformity(fields)
             fld = self.fields_on_grid(fields) if want_fields else None
+            extras["conformity"] = self.conformity(
+                fields, None if fld is None else fld["displacement"])
             return ContactResult(
                 area=area, mean_pressure=pm, penetration=fields.penetration, friction=mu,
                 reduced_friction=mu / sqrt_m2, n_contacts=mesh.n_contacts,

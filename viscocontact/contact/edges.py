@@ -33,7 +33,7 @@ import attrs
 import numpy as np
 
 from .fields import FieldSolution, NormalizedProfile, stress_intensity
-from .mesh import ALIGN_MAX, ZONE_CAP, Mesh, MeshSpec, build_mesh
+from .mesh import ALIGN_MAX, ZONE_CAP, Mesh, MeshSpec, build_mesh, element_counts
 from ..kernels.prepared import element_integrals
 
 
@@ -155,8 +155,7 @@ class EdgeContext:
             half = 0.5 * (e[1::2] - e[0::2])
             first = np.array([self.mesh.width[self.mesh.slice(j)][0]
                               for j in range(self.mesh.n_contacts)])
-            counts = np.repeat(self.counts if self.counts is not None
-                               else [self.spec.elements] * len(half), 2)
+            counts = np.repeat(element_counts(self.spec, self.counts, len(half)), 2)
             hw, rel = np.repeat(half, 2), np.repeat(first / half, 2)
             ratio = np.empty_like(raw)
             for n in np.unique(counts):

@@ -165,6 +165,12 @@ def graded_nodes(alpha: float, spec: MeshSpec, zone=None) -> np.ndarray:
     return out
 
 
+def element_counts(spec: MeshSpec, counts, n_contacts: int) -> tuple:
+    """The elements of each of ``n_contacts`` contacts (``counts = None``: ``spec.elements``
+    for all)."""
+    return (spec.elements,) * n_contacts if counts is None else tuple(counts)
+
+
 def contact_spec(spec: MeshSpec, counts, j: int) -> MeshSpec:
     """The spec of contact ``j``: ``spec`` with ``counts[j]`` elements (``counts = None``: all
     contacts have ``spec.elements``)."""
