@@ -365,14 +365,14 @@ def _run_cycle(args: argparse.Namespace) -> int:
 
 # ---- validate -----------------------------------------------------------------------------------
 def _configure_validate(parser: argparse.ArgumentParser) -> None:
-    from .validation import configure_parser
+    from .reports.validation import configure_parser
 
     configure_parser(parser)
 
 
 def _run_validate(args: argparse.Namespace) -> int:
     """Regenerate the validation report (docs/validation.md and its figures)."""
-    from .validation import run
+    from .reports.validation import run
 
     return run(args)
 
@@ -418,14 +418,14 @@ def _run_study(args: argparse.Namespace) -> int:
 
 # ---- bench --------------------------------------------------------------------------------------
 def _configure_bench(parser: argparse.ArgumentParser) -> None:
-    from .benchmarking import configure_parser
+    from .reports.bench import configure_parser
 
     configure_parser(parser)
 
 
 def _run_bench(args: argparse.Namespace) -> int:
     """Benchmark the nonlinear solvers and mesh sizes against the uniform-grid FFT peer."""
-    from .benchmarking import run
+    from .reports.bench import run
 
     return run(args)
 

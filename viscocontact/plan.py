@@ -90,7 +90,7 @@ def _geometry_steps(problem, kernel) -> list[PlanStep]:
 
 
 def _mesh_step(problem, spec, kernel) -> PlanStep:
-    from .problem import INTERIOR_CAP, SMALLEST_RESOLVED
+    from .methods.bem.meshing import INTERIOR_CAP, SMALLEST_RESOLVED
 
     disc = problem.discretization
     base = f"{disc.elements} clustered elements per contact (n = {disc.clustering:g})"
@@ -123,7 +123,7 @@ def _edge_step(problem) -> PlanStep:
     if adh.work_of_adhesion <= 0:
         return PlanStep(stage="edges", choice="K̃ = 0 at every edge (bounded stress)",
                         reason="no adhesion: no energy perturbations are computed")
-    dx = float(getattr(adh, "edge_perturbation", 0.0))
+    dx = float(adh.edge_advance())
     if dx == 0.0:
         return PlanStep(stage="edges", choice="energy balance in the limit δX → 0: K_e K̃²/4",
                         reason="edge_perturbation = 0: closed form, no enlarged solves")
@@ -135,7 +135,8 @@ def _edge_step(problem) -> PlanStep:
 
 def solve_plan(problem, prepared) -> SolvePlan:
     """The :class:`SolvePlan` of ``problem`` with its prepared tables."""
-    from .problem import mesh_spec, residual_scale
+    from .methods.bem.meshing import mesh_spec
+    from .methods.bem.system import residual_scale
 
     kernel = prepared.kernel
     spec = mesh_spec(problem.discretization, kernel, problem.adhesion)

@@ -1,9 +1,9 @@
-"""`python -m viscocontact.validation --quick`: sections, figures, closed-form errors."""
+"""`python -m viscocontact.reports.validation --quick`: sections, figures, closed-form errors."""
 from __future__ import annotations
 
 import pytest
 
-from viscocontact import validation
+from viscocontact.reports import validation
 
 
 def _table(text: str, marker: str) -> list[list[str]]:

@@ -56,6 +56,11 @@ class AdhesionModel(abc.ABC):
         finite virtual edge advance; the orchestrator grades the edge zones below the smallest."""
         return ()
 
+    def edge_advance(self) -> float:
+        """The virtual edge advance ``q0·δX`` the model's balance uses (0: none, or the limit
+        δX → 0); reported with every result."""
+        return 0.0
+
     @property
     def work_of_adhesion(self) -> float:
         """γ̃ (0 without adhesion)."""

@@ -46,6 +46,9 @@ class EnergyBalance(AdhesionModel):
     edge_perturbation: float = attrs.field(default=DEFAULT_EDGE_PERTURBATION,
                                            validator=in_range(0.0, 0.1))
 
+    def edge_advance(self) -> float:
+        return float(self.edge_perturbation)
+
     def resolved_lengths(self) -> tuple[float, ...]:
         return (self.edge_perturbation,) if self.edge_perturbation > 0 else ()
 

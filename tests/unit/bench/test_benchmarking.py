@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from viscocontact import benchmarking
+from viscocontact.reports import bench as benchmarking
 from viscocontact.cli import main
 
 SUITE = Path(__file__).resolve().parents[3] / "benchmarks"

@@ -202,11 +202,15 @@ def test_a_contact_with_a_nearly_vanishing_pressure_inside_is_refined_not_cycled
 def test_a_cycling_contact_at_the_element_cap_is_reported_not_converged(monkeypatch):
     """The same contact set with the refinement capped at the 64 elements the contact has: the
     equilibrium solve reports the cycle instead of passing the state for converged."""
-    import viscocontact.problem as problem
+    import viscocontact.methods.bem.meshing as meshing
+    from viscocontact.methods.bem.method import Solve
+    from viscocontact.methods.bem.sets import Control
+    from viscocontact.methods.bem.state import Outcome
 
-    monkeypatch.setattr(problem, "INTERIOR_CAP", 64)
+    monkeypatch.setattr(meshing, "INTERIOR_CAP", 64)
     _, prob = _seed2_problem()
-    status, *_, message = problem._Run(prob, prob.prepare()).equilibrate(
-        np.array(SEED2_CONTACTS), {"mean_pressure": 0.3})
-    assert status == "not_converged"
+    state = Solve(prob, prob.prepare()).equilibrium.solve(np.array(SEED2_CONTACTS),
+                                                          Control.load_of(0.3))
+    message = state.message
+    assert state.outcome is Outcome.NOT_CONVERGED
     assert "contact set cycles" in message and "with 64 elements in the contact" in message

@@ -6,7 +6,8 @@ from hypothesis import strategies as st
 
 from viscocontact.adhesion import NoAdhesion
 from viscocontact.contact.mesh import MeshSpec, build_mesh, clustered_nodes
-from viscocontact.problem import INTERIOR_CAP, ContactProblem, Discretization, _Run
+from viscocontact.methods.bem.method import Solve
+from viscocontact.problem import INTERIOR_CAP, ContactProblem, Discretization
 from viscocontact.profiles import SelfAffineProfile, Sinusoid
 from viscocontact.rheology import Elastic
 from viscocontact.solvers import Newton
@@ -30,7 +31,7 @@ def _run(profile, elements=32, resolution=8.0):
                           solver=Newton(), mean_pressure=0.3,
                           discretization=Discretization(elements=elements,
                                                         interior_resolution=resolution))
-    return _Run(prob, prob.prepare())
+    return Solve(prob, prob.prepare()).policy
 
 
 @settings(max_examples=40, deadline=None)

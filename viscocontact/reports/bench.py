@@ -39,7 +39,7 @@ from pathlib import Path
 import attrs
 import numpy as np
 
-from .errors import ValidationError
+from ..errors import ValidationError
 
 BETA = 10.0
 PEER_FILE = "peer_fft.py"
@@ -60,10 +60,10 @@ class Case:
 
     def components(self):
         """``(profile, rheology, adhesion)`` of the scene."""
-        from .adhesion import EnergyBalance, NoAdhesion
-        from .contact.fields import NormalizedProfile
-        from .profiles import SelfAffineProfile, Sinusoid
-        from .rheology import Elastic, StandardLinearSolid
+        from ..adhesion import EnergyBalance, NoAdhesion
+        from ..contact.fields import NormalizedProfile
+        from ..profiles import SelfAffineProfile, Sinusoid
+        from ..rheology import Elastic, StandardLinearSolid
 
         prof = (Sinusoid(amplitude=0.1) if self.profile == "sinusoid"
                 else SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=0))
@@ -116,13 +116,13 @@ class BudgetExceeded(BaseException):
 
 def time_limit(seconds):
     """Raise :class:`BudgetExceeded` after ``seconds`` of wall time (main thread only)."""
-    from ._alarm import time_limit as limit
+    from .._alarm import time_limit as limit
 
     return limit(seconds, lambda: BudgetExceeded(f"over the {seconds:g} s budget"))
 
 
 def _solver(name: str):
-    from .solvers import Bisection, Broyden, Newton, NonlinearCG
+    from ..solvers import Bisection, Broyden, Newton, NonlinearCG
 
     return {"newton": Newton, "broyden": Broyden, "ncg": NonlinearCG, "bisection": Bisection}[name]()
 
@@ -151,8 +151,8 @@ def _timed(fn, repeats: int, budget: float) -> dict:
 
 def bem_run(case: Case, solver: str, elements: int, repeats: int, budget: float) -> dict:
     """One BEM solve of ``case`` (viscocontact.problem.ContactProblem)."""
-    from ._blas import single_blas_thread
-    from .problem import ContactProblem, Discretization
+    from .._blas import single_blas_thread
+    from ..problem import ContactProblem, Discretization
 
     prof, rheology, adhesion = case.components()
     problem = ContactProblem(profile=prof, rheology=rheology, adhesion=adhesion,
@@ -491,10 +491,10 @@ def run(args: argparse.Namespace) -> int:
 
 
 def main(argv=None) -> int:
-    """``python -m viscocontact.benchmarking [options]`` (same as ``viscocontact bench``)."""
-    from .cli import main as cli_main
-
-    return cli_main(["bench", *(argv if argv is not None else sys.argv[1:])])
+    """``python -m viscocontact.reports.bench [options]`` (same as ``viscocontact bench``)."""
+    parser = argparse.ArgumentParser(prog="viscocontact bench", description=__doc__.splitlines()[0])
+    configure_parser(parser)
+    return run(parser.parse_args(argv))
 
 
 if __name__ == "__main__":

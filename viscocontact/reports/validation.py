@@ -102,13 +102,13 @@ def time_limit(seconds):
     Uses ``SIGALRM``, so it only acts in the main thread of a process (the pool's workers and
     the serial runner); elsewhere, or without a limit, the block runs unbounded.
     """
-    from ._alarm import time_limit as limit
+    from .._alarm import time_limit as limit
 
     return limit(seconds, lambda: SolveTimeout(f"time limit of {seconds:.0f} s reached"))
 
 
 def _profile(seed):
-    from .profiles import SelfAffineProfile
+    from ..profiles import SelfAffineProfile
 
     return SelfAffineProfile(hurst=HURST, scales=SCALES, rms=RMS, seed=seed)
 
@@ -131,7 +131,7 @@ def _failure(error, started) -> dict:
 def _guarded(problem, limit, initial=None):
     """``(result or None, row)``: one solve with single-threaded BLAS under the time limit;
     errors become failed rows (reported in the markdown, never hidden)."""
-    from ._blas import single_blas_thread
+    from .._blas import single_blas_thread
 
     started = time.perf_counter()
     try:
@@ -144,10 +144,10 @@ def _guarded(problem, limit, initial=None):
 
 def _problem(profile, *, rheology=None, solver=None, gamma=None, edge_perturbation=None,
              discretization=None, **kw):
-    from .adhesion import EnergyBalance
-    from .problem import ContactProblem, Discretization
-    from .rheology import Elastic
-    from .solvers import Newton
+    from ..adhesion import EnergyBalance
+    from ..problem import ContactProblem, Discretization
+    from ..rheology import Elastic
+    from ..solvers import Newton
 
     extra = {}
     if gamma is not None:
@@ -163,9 +163,9 @@ def _problem(profile, *, rheology=None, solver=None, gamma=None, edge_perturbati
 def task_sinusoid(*, mean_pressure, limit, elements=64, zeta=0.0, viscoelastic=False,
                   gamma=None, edge_perturbation=None, edge_zones=True) -> dict:
     """One wavy contact (Newton): elastic, or the standard linear solid at speed ζ."""
-    from .problem import Discretization
-    from .profiles import Sinusoid
-    from .rheology import StandardLinearSolid
+    from ..problem import Discretization
+    from ..profiles import Sinusoid
+    from ..rheology import StandardLinearSolid
 
     disc = Discretization(elements=elements) if edge_zones else Discretization(
         elements=elements, edge_resolution=None)
@@ -199,8 +199,8 @@ def _path(base, field, values, limit) -> list:
 
 def task_rough_load_path(*, seed, loads, elements, limit) -> list:
     """Elastic adhesionless rough contact along increasing load (bisection)."""
-    from .problem import Discretization
-    from .solvers import Bisection
+    from ..problem import Discretization
+    from ..solvers import Bisection
 
     base = _problem(_profile(seed), solver=Bisection(), mean_pressure=loads[0],
                     discretization=Discretization(elements=elements))
@@ -209,9 +209,9 @@ def task_rough_load_path(*, seed, loads, elements, limit) -> list:
 
 def task_rough_zeta_path(*, seed, zetas, mean_pressure, elements, limit) -> list:
     """Adhesionless rough contact on the standard linear solid along ζ (bisection)."""
-    from .problem import Discretization
-    from .rheology import StandardLinearSolid
-    from .solvers import Bisection
+    from ..problem import Discretization
+    from ..rheology import StandardLinearSolid
+    from ..solvers import Bisection
 
     base = _problem(_profile(seed), rheology=StandardLinearSolid(beta=BETA), solver=Bisection(),
                     mean_pressure=mean_pressure, discretization=Discretization(elements=elements))
@@ -220,9 +220,9 @@ def task_rough_zeta_path(*, seed, zetas, mean_pressure, elements, limit) -> list
 
 def task_rough(*, seed, mean_pressure, elements, limit, zeta=0.0, viscoelastic=False) -> dict:
     """One rough adhesionless solve from first touch, mesh of eq. 4.22 alone (limit cases)."""
-    from .problem import Discretization
-    from .rheology import StandardLinearSolid
-    from .solvers import Bisection
+    from ..problem import Discretization
+    from ..rheology import StandardLinearSolid
+    from ..solvers import Bisection
 
     rheology = StandardLinearSolid(beta=BETA) if viscoelastic else None
     return _guarded(_problem(_profile(seed), rheology=rheology, solver=Bisection(),
@@ -379,7 +379,7 @@ def _peak(zetas, values):
 # Sections: results (dictionaries of numbers) from the finished tasks
 # ---------------------------------------------------------------------------------------------
 def closed_forms(plan, r):
-    from .reference import JohnsonWavy, westergaard_area, westergaard_penetration
+    from ..reference import JohnsonWavy, westergaard_area, westergaard_penetration
 
     west = []
     for p in plan.westergaard_loads:
@@ -400,7 +400,7 @@ def closed_forms(plan, r):
 
 
 def mesh_convergence(plan, r):
-    from .reference import JohnsonWavy, westergaard_area
+    from ..reference import JohnsonWavy, westergaard_area
 
     ns = list(plan.mesh_elements)
     out = {}
@@ -425,7 +425,7 @@ def mesh_convergence(plan, r):
 
 
 def rough_area(plan, r):
-    from .theories import (GreenwoodWilliamson, HeightCurvatureModel, PerssonContact,
+    from ..theories import (GreenwoodWilliamson, HeightCurvatureModel, PerssonContact,
                            SimplifiedBGT)
 
     theories = {"persson": "Persson, line form", "persson_iso": "eq. 3.45 as printed",
@@ -488,9 +488,9 @@ def rough_area(plan, r):
 
 
 def friction(plan, r):
-    from .profiles import Sinusoid
-    from .rheology import StandardLinearSolid
-    from .theories import PerssonFriction
+    from ..profiles import Sinusoid
+    from ..rheology import StandardLinearSolid
+    from ..theories import PerssonFriction
 
     sls = StandardLinearSolid(beta=BETA)
     dense = 10.0 ** np.linspace(-4, 4, 801)
@@ -537,7 +537,7 @@ def friction(plan, r):
 
 
 def limits(plan, r):
-    from .reference import JohnsonWavy
+    from ..reference import JohnsonWavy
 
     rows = []
     for kind, gamma, dx in _LIMIT_KINDS:
@@ -572,7 +572,7 @@ def fuller_tabor_note(gamma=2.387e-7, p=0.05):
     """FT (loading) over GW area at the thesis's γ̃ for seed 0, and the adhesion parameter θ."""
     from scipy.optimize import brentq
 
-    from .theories import FullerTabor, GreenwoodWilliamson
+    from ..theories import FullerTabor, GreenwoodWilliamson
 
     prof = _profile(0)
     ft = FullerTabor.from_profile(prof, gamma=gamma)
@@ -885,7 +885,7 @@ def _md_models(cf, mc, ra, fr, li, ft, plan) -> list[str]:
 
 def markdown(plan, sections, ft, timing) -> str:
     """The report's text from the computed sections."""
-    from . import __version__
+    from .. import __version__
 
     cf, mc, ra, fr, li = (sections[k] for k in ("closed", "mesh", "rough", "friction", "limits"))
     pp = ra["pooled"]["persson"]
@@ -894,7 +894,7 @@ def markdown(plan, sections, ft, timing) -> str:
          f"{' --quick' if plan.name == 'quick' else ''}`; do not edit by hand -->", "",
          f"The BEM of `viscocontact` {__version__} against closed forms and the classical theories "
          f"of the thesis's Chapters 1 and 3 ({plan.name} run). Every number below is computed by "
-         "`viscocontact/validation.py`; regenerate with `viscocontact validate` "
+         "`viscocontact/reports/validation.py`; regenerate with `viscocontact validate` "
          "(`--quick` for a short smoke run). Units are the dimensionless groups of eq. 4.17 "
          "(`docs/README.md`).", "",
          "**Headlines.**", "",
@@ -970,7 +970,7 @@ def _save(fig, path: Path) -> Path:
 
 
 def _figure_closed_forms(plt, cf, mc, path):
-    from .reference import JohnsonWavy
+    from ..reference import JohnsonWavy
 
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
     A = np.linspace(1e-3, 2 * np.pi - 1e-3, 600)
@@ -1007,7 +1007,7 @@ def _figure_closed_forms(plt, cf, mc, path):
 def _figure_rough_area(plt, ra, plan, path):
     from scipy import special
 
-    from .theories import GreenwoodWilliamson, HeightCurvatureModel, SimplifiedBGT
+    from ..theories import GreenwoodWilliamson, HeightCurvatureModel, SimplifiedBGT
 
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
     good = [w for w in ra["rows"] if w["converged"]]
@@ -1071,7 +1071,7 @@ def _figure_friction(plt, fr, plan, path):
 
 
 def _figure_limits(plt, fr, li, path):
-    from .reference import westergaard_area
+    from ..reference import westergaard_area
 
     fig, a = plt.subplots(figsize=(6, 4.2))
     for i, w in enumerate(fr["wavy"]):
@@ -1154,7 +1154,7 @@ def generate(plan: Plan, out, workers: int = 2, log=print) -> dict:
 
 
 def configure_parser(parser: argparse.ArgumentParser) -> None:
-    """The options of ``viscocontact validate`` (also ``python -m viscocontact.validation``)."""
+    """The options of ``viscocontact validate`` (also ``python -m viscocontact.reports.validation``)."""
     parser.add_argument("--quick", action="store_true",
                         help="fewer seeds, loads and speeds (under a minute)")
     parser.add_argument("--out", default="docs",
@@ -1166,7 +1166,7 @@ def configure_parser(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Regenerate the validation report (docs/validation.md and its figures)."""
     if args.workers < 1:
-        from .errors import ValidationError
+        from ..errors import ValidationError
 
         raise ValidationError("--workers", args.workers, "an integer >= 1")
     generate(QUICK if args.quick else FULL, Path(args.out), workers=args.workers,
@@ -1175,7 +1175,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def main(argv=None) -> int:
-    """``python -m viscocontact.validation [--quick] [--out docs] [--workers N]``."""
+    """``python -m viscocontact.reports.validation [--quick] [--out docs] [--workers N]``."""
     parser = argparse.ArgumentParser(prog="viscocontact validate",
                                      description="Regenerate the validation report.")
     configure_parser(parser)

@@ -1,0 +1,134 @@
+"""What is checked on a uniform grid once the edges are in equilibrium: interpenetration outside
+the contacts (contacts are born there), tension inside adhesionless contacts (they split there),
+and how closely the discrete solid follows the profile between collocation points."""
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from ...contact.fields import displacement
+from ...contact.topology import TWO_PI, negative_regions
+from .sets import Control, first_touch, inside
+
+
+class Checks:
+    """The check grid of one solve.
+
+    Parameters
+    ----------
+    prep : Prepared
+    check_points : int
+        Points of the uniform grid (:attr:`Discretization.check_points`).
+    """
+
+    def __init__(self, prep, check_points: int):
+        self.prep = prep
+        self.points = check_points
+        #: left end of the period window: half a period before the highest peak
+        self.origin = prep.shape.peak_position - np.pi
+
+    def grid(self):
+        return self.origin + TWO_PI * (np.arange(self.points) + 0.5) / self.points
+
+    @functools.cached_property
+    def check_x(self):
+        """Where interpenetration is checked: the uniform grid and every local maximum of the
+        profile, so that a contact narrower than the grid spacing is still born."""
+        peaks = self.origin + np.mod(self.prep.shape.maxima - self.origin, TWO_PI)
+        return np.unique(np.concatenate([self.grid(), peaks]))
+
+    def gap_outside(self, fields):
+        """Gap ``ũ - w`` at the check points outside the contacts (edges excluded by 1% width)."""
+        x = self.check_x
+        mesh = fields.mesh
+        keep = np.ones(x.shape, bool)
+        for j in range(mesh.n_contacts):
+            a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
+            pad = 0.01 * (b - a) + 1e-9
+            for shift in (-TWO_PI, 0.0, TWO_PI):
+                keep &= ~((x + shift > a - pad) & (x + shift < b + pad))
+        xs = x[keep]
+        if mesh.n_contacts:
+            u = displacement(self.prep.kernel, mesh, fields.sigma, xs)
+        else:
+            u = np.zeros_like(xs)
+        w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
+        return xs, u - w
+
+    def births(self, fields):
+        """Regions ``(a, b, depth)`` outside the contacts where the profile penetrates."""
+        xs, gap = self.gap_outside(fields)
+        return negative_regions(xs, gap, 1e-9)
+
+    def births_without_contact(self, control: Control):
+        """Contacts of a state without any: where the profile penetrates the undeformed solid
+        (penetration control), the first touch (a compressive load) or none."""
+        if control.is_load:
+            return None if control.value <= 0 else first_touch(self.prep.shape)[1]
+        x = self.check_x
+        w = self.prep.shape.heights(x) - 1.0 + control.value
+        regions = negative_regions(x, -w, 0.0)
+        if not regions:
+            return None
+        return np.array([v for (a, b, _) in regions for v in (a, b)])
+
+    def conformity(self, fields, grid_displacement=None) -> float:
+        """Largest ``|ũ - w|`` at the check grid's points inside the contacts: how far the
+        discrete solid departs from the profile between collocation points (zero at them), in
+        units of the profile amplitude. A discretisation error; see
+        :attr:`Discretization.interior_resolution`. ``grid_displacement``: ``ũ`` on the whole
+        check grid when it is at hand (:meth:`fields_on_grid`)."""
+        x = self.grid()
+        mesh = fields.mesh
+        within = inside(x, mesh.edges, closed=False)
+        if not within.any():
+            return 0.0
+        xs = x[within]
+        u = (displacement(self.prep.kernel, mesh, fields.sigma, xs) if grid_displacement is None
+             else grid_displacement[within])
+        w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
+        return float(np.max(np.abs(u - w)))
+
+    def fields_on_grid(self, fields):
+        """Pressure, displacement and gap on the check grid."""
+        x = self.grid()
+        mesh = fields.mesh
+        u = displacement(self.prep.kernel, mesh, fields.sigma, x)
+        pres = np.zeros_like(x)
+        for shift in (-TWO_PI, 0.0, TWO_PI):
+            idx = np.searchsorted(mesh.right, x + shift)
+            ok = idx < len(mesh.right)
+            idx = np.minimum(idx, len(mesh.right) - 1)
+            within = ok & (x + shift >= mesh.left[idx])
+            pres = np.where(within, -fields.sigma[idx], pres)
+        w = self.prep.shape.heights(x) - 1.0 + fields.penetration
+        # inside the contacts the gap is zero by the contact condition (the discrete displacement
+        # between collocation points differs from the profile by discretisation error only: the
+        # result's extras["conformity"])
+        within = inside(x, mesh.edges, closed=True)
+        return {"x": x, "pressure": pres, "displacement": u, "gap": np.where(within, 0.0, u - w)}
+
+
+def tensile_split(fields):
+    """Split contacts that carry tension inside (an adhesionless solid cannot): the new edges,
+    for each contact split its index and the middle of its tensile stretch, and the largest
+    tension as a fraction of the largest pressure (``None, [], 0.0`` without tension)."""
+    mesh = fields.mesh
+    sig = fields.sigma
+    scale = np.max(np.abs(sig)) if sig.size else 0.0
+    out, where, tension = [], [], 0.0
+    for j in range(mesh.n_contacts):
+        sl = mesh.slice(j)
+        s = sig[sl]
+        inner = np.zeros(s.shape, bool)
+        inner[3:-3] = s[3:-3] > 1e-6 * scale
+        if inner.any():
+            tension = max(tension, float(np.max(s[3:-3])) / scale)
+            idx = np.flatnonzero(inner)
+            lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
+            out += [mesh.edges[2 * j], lo, hi, mesh.edges[2 * j + 1]]
+            where.append((j, 0.5 * (lo + hi)))
+        else:
+            out += [mesh.edges[2 * j], mesh.edges[2 * j + 1]]
+    return (np.array(out), where, tension) if where else (None, [], 0.0)

@@ -1,0 +1,253 @@
+"""The equilibrium at one control value, contact-set changes included (thesis §4.4).
+
+From a contact set the :class:`NonlinearSolver` moves the edges until every edge residual
+vanishes; when contacts merge or vanish the solve restarts in the new dimension; once converged,
+the gap is checked on the check grid: where the profile would penetrate the solid a contact is
+born, an adhesionless contact carrying tension is split, and a contact that grew past what its
+mesh resolves inside gets more elements; the solve restarts until nothing changes.
+"""
+from __future__ import annotations
+
+import attrs
+import numpy as np
+
+from ...adhesion.none import NoAdhesion
+from ...contact.mesh import element_counts
+from ...contact.topology import TopologyChange, repair
+from .checks import tensile_split
+from .sets import MIN_GAP, MIN_WIDTH, Control
+from .state import Outcome, State
+from .system import EdgeSystem
+
+#: A merged adhesionless contact whose tension, at most this fraction of the largest pressure,
+#: and split alternate is refined (the sign of a nearly vanishing pressure is below the mesh's
+#: error: 1e-3 of the largest pressure measured at 64 elements across a narrow valley); a
+#: larger tension that alternates is reported as a cycle.
+REFINED_TENSION = 1e-2
+
+
+class Equilibrium:
+    """Equilibrium solves of one problem.
+
+    Parameters
+    ----------
+    prep : Prepared
+    spec : MeshSpec
+    policy : MeshPolicy
+        Element counts per contact (refinements are recorded on it).
+    adhesion : AdhesionModel
+    solver, fallback : NonlinearSolver
+        The primary solver, and the one taken from where it stopped (or ``None``).
+    tolerances : Tolerances
+        Already scaled to the solid's stiffness (:func:`~.system.residual_scale`).
+    max_restarts : int
+    checks : Checks
+    log : SolveLog
+    """
+
+    def __init__(self, *, prep, spec, policy, adhesion, solver, fallback, tolerances,
+                 max_restarts, checks, log):
+        self.prep = prep
+        self.spec = spec
+        self.policy = policy
+        self.adhesion = adhesion
+        self.solver = solver
+        self.fallback = fallback
+        self.tolerances = tolerances
+        self.max_restarts = max_restarts
+        self.checks = checks
+        self.log = log
+        self._noise: dict[tuple, float] = {}      # round-off floor per (edges, elements)
+
+    def system(self, control: Control, edges, counts=None) -> EdgeSystem:
+        """The edge system of ``edges`` (element counts from the mesh policy unless given)."""
+        if counts is None:
+            counts = self.policy.counts_for(edges)
+        return EdgeSystem(self.prep, self.spec, self.adhesion, control, edges, counts)
+
+    def residual_at(self, edges, control: Control):
+        """The edge residuals of ``edges`` (``None`` when they are no valid contact set)."""
+        system = self.system(control, edges)
+        try:
+            r = system.residual(edges)
+        except TopologyChange:
+            return None
+        self.log.evaluations += system.evaluations
+        return r
+
+    def solve(self, edges, control: Control, use_fallback: bool = True,
+              budget: int | None = None, refine: bool = True) -> State:
+        """Equilibrium at ``control`` from ``edges`` (contact-set changes included).
+
+        ``use_fallback = False`` skips the fallback march when the primary solver stops, and
+        ``budget`` caps the residual evaluations of each solver call: the approach path uses both
+        for its trial steps, since a solve that fails near a fold costs hundreds of evaluations
+        while a halved step (and at the end the snap) finds the jump anyway.
+
+        ``refine = False`` reports a contact whose small tension and split alternate as a cycle
+        instead of refining it (:data:`REFINED_TENSION`): the approach's intermediate steps,
+        where two contacts about to merge pass through a nearly vanishing pressure between them
+        for a moment; a halved step gets past it, and a refinement would stay for the rest of
+        the solve.
+        """
+        log = self.log
+        tolerances = self.tolerances
+        if budget is not None:
+            tolerances = attrs.evolve(tolerances, max_evaluations=min(budget,
+                                                                      tolerances.max_evaluations))
+        edges = np.asarray(edges, dtype=float)
+        fallback_first = False
+        converged_before_births: list[np.ndarray] = []
+        splits: list[np.ndarray] = []
+        for _ in range(self.max_restarts):
+            if edges.size == 0:
+                born = self.checks.births_without_contact(control)
+                if born is None:
+                    return State.no_contact()
+                edges = born
+                continue
+            system = self.system(control, edges)
+            try:
+                tolerances = self.noise_floor(system, edges, tolerances)
+                if fallback_first and self.fallback is not None:
+                    fallback_first = False
+                    res = self.fallback.solve(system, edges, tolerances)
+                else:
+                    res = self.solver.solve(system, edges, tolerances)
+                if not res.converged and self.fallback is not None and use_fallback:
+                    log.iterations += res.iterations
+                    log.event(f"{type(self.solver).__name__} stopped ({res.status.value}); "
+                              f"{type(self.fallback).__name__} takes over")
+                    start = res.x if np.all(np.isfinite(res.x)) else edges
+                    res = self.fallback.solve(system, start, tolerances)
+            except TopologyChange as change:
+                log.evaluations += system.evaluations
+                log.event(change.reason)
+                if change.full_contact:
+                    # accept closure only if a small-step march closes the contact too (a Newton
+                    # trial step may overshoot across the period)
+                    start = system.last_valid
+                    if start is None or self.fallback is None or self.closes(start, control):
+                        return State.full_contact()
+                    log.event("closure rejected: a step overshot the period")
+                    edges = start
+                    fallback_first = True
+                    continue
+                edges = change.edges
+                continue
+            log.count(system, res)
+            if not res.converged:
+                fields, ctx, r = system.evaluate(res.x)
+                return State(outcome=Outcome.NOT_CONVERGED, edges=res.x, fields=fields, ctx=ctx,
+                             residual=float(np.max(np.abs(r))),
+                             message=f"edge solve did not converge: {res.status.value}: "
+                                     f"{res.message}")
+            x = res.x
+            fields, ctx, r = system.evaluate(x)
+            size = float(np.max(np.abs(r)))
+
+            def not_converged(message, x=x, fields=fields, ctx=ctx, size=size):
+                return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
+                             residual=size, message=message)
+
+            regions = self.checks.births(fields)
+            if regions and any(len(x) == len(y) and np.allclose(x, y, rtol=0, atol=1e-7)
+                               for y in converged_before_births):
+                # the same equilibrium again: the contacts born from it last time vanished
+                # (detached or turned inside out) and would be born again, endlessly
+                return not_converged(
+                    "contact set cycles: contacts born where the gap is negative on the check "
+                    f"grid ({len(regions)} region(s)) detach again; a finer check grid "
+                    "(Discretization.check_points) or mesh may settle it")
+            if regions:
+                converged_before_births.append(x.copy())
+                new = [v for (a, b, _) in regions for v in (a, b)]
+                merged, _, _, full = repair(np.concatenate([x, new]), MIN_WIDTH, MIN_GAP)
+                log.event(f"{len(regions)} contact(s) born")
+                if full:
+                    return State.full_contact()
+                edges = merged
+                continue
+            split, where, tension = ((None, [], 0.0) if not isinstance(self.adhesion, NoAdhesion)
+                                     else tensile_split(fields))
+            if split is not None and sum(len(split) == len(y)
+                                         and np.allclose(split, y, rtol=0, atol=1e-3)
+                                         for y in splits) >= 2:
+                # split -> the parts merge -> the same tension, twice. A small tension means
+                # the pressure nearly vanishes inside the contact, with a sign below what this
+                # mesh resolves: refine that contact
+                counts = element_counts(self.spec, system.counts, len(x) // 2)
+                if tension > REFINED_TENSION or not refine:
+                    return not_converged(
+                        "contact set cycles: a merged contact carries tension "
+                        f"({tension:.2g} of the largest pressure), and the parts it is split "
+                        "into merge again")
+                if not self.policy.refine_at([c for _, c in where], [counts[j] for j, _ in where]):
+                    return not_converged(
+                        "contact set cycles: a merged contact carries tension, and the parts "
+                        f"it is split into merge again, with {self.policy.cap} elements in the "
+                        "contact")
+                log.event(
+                    "mesh refined in a contact whose tension and split alternate (up to "
+                    f"{max(m for _, m in self.policy.refined)} elements): its tension, "
+                    f"{tension:.2g} of the largest pressure, is a nearly vanishing "
+                    "pressure whose sign the mesh does not resolve")
+                splits.clear()
+                edges = x
+                continue
+            if split is not None:
+                splits.append(split)
+                log.event("adhesionless contact split where it carried tension "
+                          f"(up to {tension:.2g} of the largest pressure)")
+                edges = split
+                continue
+            finer = self.policy.counts_for(x)
+            if finer is not None and (system.counts is None
+                                      or any(a > b for a, b in zip(finer, system.counts))):
+                # contacts grew past what their meshes in this solve resolve inside them
+                log.event(f"mesh refined inside contacts (up to {max(finer)} elements) "
+                          "to resolve the profile between collocation points")
+                edges = x
+                continue
+            return State(outcome=Outcome.CONVERGED, edges=x, fields=fields, ctx=ctx,
+                         residual=size, message="converged")
+        return State(outcome=Outcome.NOT_CONVERGED, edges=edges, residual=np.inf,
+                     message=f"contact set still changing after {self.max_restarts} restarts")
+
+    def noise_floor(self, system, x, tolerances):
+        """``tolerances`` with the residual tolerance raised to the round-off floor of the edge
+        residuals when that floor is higher.
+
+        The floor is the largest change of any edge residual when every edge moves by a
+        relative 1e-13 (far below any physical change), measured once per number of edges and
+        elements per contact in a solve (one extra residual evaluation). Energy-balance
+        residuals are differences of energies over δX and carry round-off of 1e-10 to 5e-9 on
+        rough multi-contact meshes; asking a solver for less than that makes it wander at the
+        floor until its budget runs out (200 evaluations for one approach step of the thesis
+        rough profile at p̃∞ ≈ 0.4). The accepted floor is four times the measured change; the
+        result reports the actual residual.
+        """
+        n = (len(x), system.counts)
+        if n not in self._noise:
+            xp = x * (1.0 + 1e-13)
+            r1 = system.residual(xp)
+            r0 = system.residual(x)           # last: the solver's first call finds it cached
+            d = np.abs(r1 - r0)
+            self._noise[n] = float(np.max(d)) if np.all(np.isfinite(d)) else 0.0
+        floor = 4.0 * self._noise[n]
+        if floor <= tolerances.residual:
+            return tolerances
+        if not any(e.startswith("residual tolerance raised") for e in self.log.events[-3:]):
+            self.log.event(f"residual tolerance raised to the round-off floor {floor:.2g}")
+        return attrs.evolve(tolerances, residual=floor)
+
+    def closes(self, edges, control: Control) -> bool:
+        """Whether the fallback march from ``edges`` closes the contact over the period."""
+        system = self.system(control, edges)
+        try:
+            self.fallback.solve(system, edges, self.tolerances)
+        except TopologyChange as change:
+            self.log.evaluations += system.evaluations
+            return change.full_contact
+        self.log.evaluations += system.evaluations
+        return False

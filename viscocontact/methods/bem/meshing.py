@@ -1,0 +1,159 @@
+"""Mesh policy of the boundary-element method: the discretisation a user chooses and the element
+counts that each contact of an equilibrium solve gets from it.
+
+* :class:`Discretization`: elements per contact (eq. 4.21), clustering (eq. 4.27), edge zones,
+  interior resolution, the check grid and the approach step.
+* :func:`mesh_spec`: the :class:`~viscocontact.contact.mesh.MeshSpec` of a problem (eq. 4.22 plus
+  edge zones down to the smallest physical length).
+* :class:`MeshPolicy`: the element count of each contact of a contact set, from the interior rule
+  and the refinements recorded during a solve.
+"""
+from __future__ import annotations
+
+import attrs
+import numpy as np
+
+from ..._validation import in_range, int_range
+from ...contact.mesh import MeshSpec, clustered_nodes
+from ...contact.topology import TWO_PI
+from .sets import inside
+
+
+@attrs.frozen(kw_only=True)
+class Discretization:
+    """Mesh and checking resolution.
+
+    Parameters
+    ----------
+    elements : int
+        Elements per contact (eq. 4.21's N).
+    clustering : float
+        Exponent n of the node density of eq. 4.27 (>= 1/2).
+    edge_resolution : float or None
+        Size of the element at every edge relative to the smallest physical length below the
+        contact scale: the memory length of each dissipative relaxation branch (``ζ τ_i/τ``) and
+        the adhesion model's lengths (a finite δX). Geometric edge zones (ratio ``grading``) reach
+        it (see :mod:`viscocontact.contact.mesh`). ``None`` meshes with eq. 4.22 alone, which
+        resolves a length ℓ at an edge only when N ≳ √(α/ℓ).
+    grading : float
+        Ratio of consecutive element sizes in the edge zones.
+    check_points : int
+        Points of the uniform grid on which interpenetration is checked.
+    path_step : float
+        Largest penetration step ``Δ̃`` of the approach path.
+    interior_resolution : float or None
+        Elements per shortest wavelength of the profile (:attr:`Profile.shortest_wavelength`)
+        inside a contact. The clustered mesh of eq. 4.22 puts its largest elements mid-contact
+        (``≈ πα/N`` for a half-width α), so a wide contact on a multiscale profile does not
+        follow the profile between its collocation points: on the thesis rough profile at
+        p̃∞ = 0.6 a contact 1.1 wide with 32 elements departed from the profile by 8e-3 of
+        its amplitude between collocation points, and a merged contact spanned a valley where
+        the solid separates. A contact's elements are therefore doubled from ``elements`` (up
+        to :data:`INTERIOR_CAP`) until its largest element is at most
+        ``λ_min/interior_resolution``. ``None``: ``elements`` for every contact. The target does
+        not scale with ``elements``: a mesh-convergence study that doubles ``elements`` must
+        double ``interior_resolution`` too, or the wide contacts keep their counts (doubling
+        ``elements`` alone gave an observed order of 0.85 on a crowded rough case, both
+        together 2.0; ``docs/verification.md``).
+    """
+
+    elements: int = attrs.field(default=64, validator=int_range(8, 4096))
+    clustering: float = attrs.field(default=1.0, validator=in_range(0.5, 4.0))
+    edge_resolution: float | None = attrs.field(default=0.1, validator=attrs.validators.optional(
+        in_range(1e-3, 1.0)))
+    grading: float = attrs.field(default=1.15, validator=in_range(1.05, 2.0))
+    check_points: int = attrs.field(default=2048, validator=int_range(64, 1 << 20))
+    path_step: float = attrs.field(default=0.05, validator=in_range(1e-4, 1.0))
+    interior_resolution: float | None = attrs.field(
+        default=8.0, validator=attrs.validators.optional(in_range(1.0, 64.0)))
+
+
+#: Most elements per contact that :attr:`Discretization.interior_resolution` refines to.
+INTERIOR_CAP = 512
+#: Lengths below this (q0-scaled) are not resolved by the edge zones: a memory length ζτ_i/τ
+#: below it changes areas by O(ζ/α) only, and resolving it costs elements at every edge.
+SMALLEST_RESOLVED = 1e-6
+
+
+def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
+    """The mesh of a problem: eq. 4.22 plus edge zones down to ``edge_resolution`` times the
+    smallest physical length (memory lengths of the dissipative branches, adhesion lengths).
+
+    Without a finite edge advance, an elastic kernel (no dissipative branch) gets no zones: its
+    edge fields are self-similar square-root fields, which eq. 4.22 with the calibrated fit
+    already resolves. Neither does a kernel whose memory lengths are all below
+    ``SMALLEST_RESOLVED`` or above the period. A finite advance δX always gets zones aligned with
+    it, so that the enlarged contact of the energy balance is the bordered base mesh
+    (:meth:`~viscocontact.contact.edges.EdgeContext.bordered_release`).
+    """
+    memory = [float(z) for z in getattr(kernel, "zetas", ())]
+    advance = [ell for ell in adhesion.resolved_lengths() if ell > 0]
+    if disc.edge_resolution is None or not (memory or advance):
+        return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading)
+    # memory lengths below SMALLEST_RESOLVED are not resolved, longer than the period need no zone
+    lengths = ([ell for ell in memory if SMALLEST_RESOLVED <= ell < TWO_PI]
+               + [ell for ell in advance if ell < TWO_PI])
+    smallest = None
+    if lengths:
+        smallest = max(disc.edge_resolution * min(lengths), SMALLEST_RESOLVED)
+    return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading,
+                    smallest=smallest, advance=min(advance) if advance and smallest else None)
+
+
+class MeshPolicy:
+    """Element counts of the contacts of one solve.
+
+    The interior rule (:attr:`Discretization.interior_resolution`) and the refinements recorded
+    by :meth:`refine_at` (a contact whose nearly vanishing tension and split alternate) decide
+    how many elements each contact gets; the refinements last for the rest of the solve unless
+    :meth:`forget` is called (a restart from first touch).
+    """
+
+    def __init__(self, spec: MeshSpec, disc: Discretization, wavelength: float | None):
+        self.spec = spec
+        self.target = (None if disc.interior_resolution is None or wavelength is None
+                       else wavelength / disc.interior_resolution)
+        # (point, elements): a contact holding the point gets at least that many elements
+        self.refined: list[tuple[float, int]] = []
+
+    @property
+    def cap(self) -> int:
+        """Most elements a refinement gives a contact."""
+        return max(INTERIOR_CAP, self.spec.elements)
+
+    def counts_for(self, edges) -> tuple | None:
+        """Elements of each contact of an equilibrium solve starting from ``edges``: ``elements``
+        doubled until the contact's largest element resolves the profile's shortest wavelength
+        (:attr:`Discretization.interior_resolution`), at most :data:`INTERIOR_CAP`, and at least
+        the count recorded for any point of the contact by :meth:`refine_at`; ``None`` when
+        every contact keeps ``elements``."""
+        spec, target = self.spec, self.target
+        edges = np.asarray(edges, dtype=float)
+        if edges.size < 2:
+            return None
+        counts = []
+        for a, b in zip(edges[0::2], edges[1::2]):
+            n = spec.elements
+            while (target is not None and n < INTERIOR_CAP
+                   and np.max(np.diff(clustered_nodes(0.5 * (b - a), n, spec.exponent))) > target):
+                n = min(2 * n, INTERIOR_CAP)
+            for point, m in self.refined:
+                if inside(np.array([point]), (a, b), closed=True)[0]:
+                    n = max(n, m)
+            counts.append(n)
+        return None if all(n == spec.elements for n in counts) else tuple(counts)
+
+    def refine_at(self, points, counts) -> bool:
+        """Give the contacts holding ``points`` twice the elements they have (``counts``), at
+        most :attr:`cap`; ``False`` when every one is at that cap already."""
+        cap = self.cap
+        grew = False
+        for point, n in zip(points, counts):
+            if n < cap:
+                self.refined.append((float(point), min(2 * n, cap)))
+                grew = True
+        return grew
+
+    def forget(self) -> None:
+        """Drop the recorded refinements (a solve that starts afresh)."""
+        self.refined.clear()

@@ -1,0 +1,138 @@
+"""The boundary-element method with energy-balance edges (thesis §4.4) as a
+:class:`~viscocontact.methods.base.SolutionMethod`.
+
+A solve wires the parts, each with one job: the mesh policy (:mod:`.meshing`), the edge system
+of a fixed contact set (:mod:`.system`), the equilibrium at one control value with its
+contact-set changes (:mod:`.equilibrium`), the grid checks (:mod:`.checks`), the approach path
+and load stability (:mod:`.path`), the closed state (:mod:`.closed`) and the result
+(:func:`assemble`).
+"""
+from __future__ import annotations
+
+import time
+from typing import ClassVar
+
+import attrs
+import numpy as np
+
+from ...contact.fields import friction
+from ...result import ContactResult, SolveStatus
+from ..base import SolutionMethod
+from .checks import Checks
+from .closed import ClosedContact
+from .equilibrium import Equilibrium
+from .meshing import MeshPolicy, mesh_spec
+from .path import Path
+from .sets import Control
+from .state import Outcome, SolveLog, State
+from .system import residual_scale
+
+
+@attrs.frozen(kw_only=True)
+class BEM(SolutionMethod):
+    """Boundary elements on edge-clustered meshes, one energy balance per contact edge.
+
+    Its options (mesh, tolerances, solvers, restarts) are the problem's
+    (:class:`~viscocontact.problem.ContactProblem`): ``discretization``, ``tolerances``,
+    ``solver``, ``fallback`` and ``max_restarts``. It solves every scene, adhesive or not; its
+    error estimate is not computed per solve (NaN): ``docs/verification.md`` gives the measured
+    discretisation errors of the default mesh.
+    """
+
+    name: ClassVar[str] = "bem"
+
+    def solve(self, problem, initial=None, *, fields: bool = False, prepared=None):
+        prep = prepared if prepared is not None else problem.prepare()
+        return Solve(problem, prep).run(initial, fields)
+
+
+class Solve:
+    """One BEM solve: the parts wired for a problem and its prepared tables."""
+
+    def __init__(self, problem, prep):
+        self.problem = problem
+        self.prep = prep
+        disc = problem.discretization
+        adhesion = problem.adhesion
+        self.spec = mesh_spec(disc, prep.kernel, adhesion)
+        self.log = SolveLog()
+        self.policy = MeshPolicy(self.spec, disc, prep.shape.wavelength)
+        self.checks = Checks(prep, disc.check_points)
+        self.closed = ClosedContact(prep, disc.check_points, self.checks.origin,
+                                    adhesive=adhesion.work_of_adhesion > 0)
+        tol = problem.tolerances
+        self.equilibrium = Equilibrium(
+            prep=prep, spec=self.spec, policy=self.policy, adhesion=adhesion,
+            solver=problem.solver, fallback=problem.fallback,
+            tolerances=attrs.evolve(tol, residual=tol.residual * residual_scale(prep.kernel)),
+            max_restarts=problem.max_restarts, checks=self.checks, log=self.log)
+        self.path = Path(self.equilibrium, self.closed, disc.path_step)
+
+    def run(self, initial, want_fields: bool) -> ContactResult:
+        t0 = time.perf_counter()
+        p = self.problem
+        target = (Control.penetration_of(p.penetration) if p.penetration is not None
+                  else Control.load_of(p.mean_pressure))
+        adhesive = p.adhesion.work_of_adhesion > 0
+        if initial is not None and getattr(initial, "full_contact", False):
+            out = self.path.from_full_contact(target)
+        elif initial is not None:
+            edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()
+            out = self.equilibrium.solve(edges, target)
+            if out.outcome is Outcome.NOT_CONVERGED and not adhesive:
+                # an adhesionless equilibrium does not depend on the path: start afresh
+                self.log.event(f"no equilibrium from the given contact set ({out.message}); "
+                               "solved from first touch")
+                self.policy.forget()       # the same answer as a solve from first touch
+                out = self.path.approach(target)
+        else:
+            out = self.path.approach(target)
+            if target.is_load and out.outcome is Outcome.CONVERGED and adhesive:
+                out = self.path.stable_under_load(out, target)
+        return self.assemble(out, target, want_fields, time.perf_counter() - t0)
+
+    def assemble(self, out: State, target: Control, want_fields: bool,
+                 elapsed: float) -> ContactResult:
+        """The :class:`ContactResult` of the final state."""
+        p, log = self.problem, self.log
+        sqrt_m2 = np.sqrt(self.prep.m2) if self.prep.m2 > 0 else np.nan
+        adh = p.adhesion
+        dx = float(adh.edge_advance())
+        extras = {"events": list(log.events), "residual_history": list(log.history),
+                  "seconds": elapsed, "method": BEM.name, "error_estimate": float("nan")}
+        common = dict(iterations=log.iterations, function_evaluations=log.evaluations,
+                      zeta=p.zeta, edge_perturbation=dx, extras=extras)
+        kind = out.outcome
+        if kind in (Outcome.CONVERGED, Outcome.NOT_CONVERGED) and out.fields is not None:
+            fields = out.fields
+            mesh = fields.mesh
+            area = float(np.sum(mesh.width))
+            pm = fields.mean_pressure
+            mu = friction(mesh, fields.sigma, self.prep.shape, pm)
+            converged = kind is Outcome.CONVERGED
+            terms = adh.edge_terms(out.ctx) if converged else None
+            _, gap = self.checks.gap_outside(fields)
+            fld = self.checks.fields_on_grid(fields) if want_fields else None
+            extras["conformity"] = self.checks.conformity(
+                fields, None if fld is None else fld["displacement"])
+            return ContactResult(
+                area=area, mean_pressure=pm, penetration=fields.penetration, friction=mu,
+                reduced_friction=mu / sqrt_m2, n_contacts=mesh.n_contacts,
+                edges=mesh.edges.reshape(-1, 2).copy(), full_contact=False,
+                converged=converged,
+                status=SolveStatus.CONVERGED if converged else SolveStatus.NOT_CONVERGED,
+                message=out.message, residual=out.residual,
+                min_gap=float(gap.min()) if gap.size else np.inf,
+                edge_terms=terms, fields=fld, **common)
+        if kind is Outcome.FULL_CONTACT:
+            return self.closed.result(target, out.message, want_fields, common)
+        if kind is Outcome.NO_CONTACT:
+            pen = np.nan if target.is_load else target.value
+            return ContactResult(area=0.0, mean_pressure=0.0, penetration=pen, friction=np.nan,
+                                 reduced_friction=np.nan, n_contacts=0, edges=np.zeros((0, 2)),
+                                 full_contact=False, converged=True, status=SolveStatus.NO_CONTACT,
+                                 message=out.message, residual=0.0, min_gap=np.inf, **common)
+        return ContactResult(area=np.nan, mean_pressure=np.nan, penetration=np.nan, friction=np.nan,
+                             reduced_friction=np.nan, n_contacts=0, edges=np.zeros((0, 2)),
+                             full_contact=False, converged=False, status=SolveStatus.FAILED,
+                             message=out.message, residual=np.inf, min_gap=np.nan, **common)

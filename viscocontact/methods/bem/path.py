@@ -1,0 +1,243 @@
+"""Paths to an equilibrium: the approach from first touch, jumps past folds, and the search for
+the root that is stable under load control.
+
+Without an initial contact set a solve follows the approach path: first touch at the highest
+peak, then quasi-static loading in steps of penetration up to the target (load control switches
+to the target load once it is bracketed), so that the same scene always gives the same answer.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ...contact.topology import TWO_PI, repair
+from .sets import MIN_GAP, MIN_WIDTH, Control, first_touch
+from .state import Outcome, State
+
+#: Residual evaluations allowed to one solver call of an approach step (a converging step takes
+#: 10-30; one that fails near a fold ran to 300 before the step was halved).
+APPROACH_BUDGET = 80
+
+
+class Path:
+    """The approach path and its companions for one solve.
+
+    Parameters
+    ----------
+    equilibrium : Equilibrium
+    closed : ClosedContact
+    path_step : float
+        Largest penetration step of the approach (:attr:`Discretization.path_step`).
+    """
+
+    def __init__(self, equilibrium, closed, path_step: float):
+        self.eq = equilibrium
+        self.closed = closed
+        self.path_step = path_step
+        self.log = equilibrium.log
+
+    def approach(self, target: Control) -> State:
+        """The equilibrium at ``target`` reached from first touch."""
+        eq, log = self.eq, self.log
+        if not target.is_load and target.value <= 0:
+            # approached from afar, the profile first touches at Δ̃ = 0 (adhesion acts only on
+            # contact), so no contact exists yet; only a retraction path reaches Δ̃ <= 0 in contact
+            return State.no_contact()
+        d0, edges = first_touch(eq.prep.shape)
+        touch = Control.penetration_of(d0)
+        if self.wants_to_grow(edges, touch):
+            # adhesion pulls the first contact open at once (a JKR-like jump): look for the state
+            # it lands on instead of asking an equilibrium solver for one that does not exist
+            jump = self.snap(edges, touch)
+            if jump is not None:
+                log.event("first contact jumped")
+                out = jump
+            else:
+                out = eq.solve(edges, touch)
+        else:
+            out = eq.solve(edges, touch)
+        if out.outcome is Outcome.NOT_CONVERGED:
+            # adhesion can make the first contact jump to a larger size at once
+            jump = self.snap(edges, touch)
+            if jump is not None:
+                log.event("first contact jumped")
+                out = jump
+        if out.outcome is Outcome.NOT_CONVERGED and target.is_load:
+            direct = self.at_target_from_first_touch(edges, target)
+            if direct is not None:
+                return direct
+        if out.outcome is not Outcome.CONVERGED:
+            return out
+        state = out
+        d_prev = d0
+        d_end = None if target.is_load else target.value
+        step = self.path_step
+        while True:
+            fields = state.fields
+            if d_end is None and fields.mean_pressure >= target.value:
+                final = eq.solve(state.edges, target)
+                if final.outcome is Outcome.NOT_CONVERGED:
+                    jump = self.snap(state.edges, target)
+                    if jump is not None:
+                        log.event("contact jumped at the target load")
+                        return jump
+                return final
+            if d_end is not None and abs(d_end - d_prev) <= 1e-15:
+                return state
+            if d_end is None:
+                d_next = d_prev + step
+            else:
+                d_next = d_prev + np.clip(d_end - d_prev, -step, step)
+            # the fallback march only once the step is small enough for a fold to be likely
+            trial = eq.solve(state.edges, Control.penetration_of(d_next),
+                             use_fallback=step < self.path_step / 16,
+                             budget=APPROACH_BUDGET, refine=d_next == d_end)
+            if trial.outcome is Outcome.CONVERGED:
+                state, d_prev = trial, d_next
+                step = min(step * 1.5, self.path_step)
+                continue
+            if trial.outcome is Outcome.FULL_CONTACT:
+                if d_end is None and not self.closed.supports(target.value):
+                    return eq.solve(state.edges, target)   # finish in load control
+                return trial
+            if step < self.path_step / 16:
+                # the branch ends (a fold): the contact jumps; look for the state it lands on
+                jump = self.snap(state.edges, Control.penetration_of(d_next))
+                if jump is None:
+                    return trial
+                if jump.outcome is Outcome.FULL_CONTACT:
+                    return jump
+                log.event(f"contact jumped at penetration {d_next:.6g}")
+                state, d_prev = jump, d_next
+                step = self.path_step
+                continue
+            step *= 0.5
+            log.event(f"approach step halved to {step:.3g}")
+
+    def at_target_from_first_touch(self, edges, target: Control) -> State | None:
+        """The target load solved directly from the first contact widened 4 and 16 times, when
+        the first contact has no equilibrium at first touch (or None).
+
+        With strong adhesion at ζ where the trailing edge is toughened, the first contact can
+        have no steady equilibrium at the first-touch penetration: its edges run round the
+        period together (sinusoid Λ̃ = 0.1, β = 10, γ̃ = 5e-4, ζ = 1: the contact translated
+        by two periods before the solver gave up). Under load control the target still has an
+        answer (there: full contact); the event log says that the path was cut short.
+        """
+        centre = 0.5 * (edges[0] + edges[1])
+        half = 0.5 * (edges[1] - edges[0])
+        for factor in (4.0, 16.0):
+            w = min(factor * half, 0.45 * TWO_PI)
+            out = self.eq.solve(np.array([centre - w, centre + w]), target)
+            if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT):
+                self.log.event("no equilibrium at first touch; the target load was solved "
+                               f"from the first contact widened {factor:g} times")
+                return out
+        return None
+
+    def wants_to_grow(self, edges, control: Control) -> bool:
+        """Whether every edge of ``edges`` has a negative residual (would advance outward)."""
+        r = self.eq.residual_at(edges, control)
+        return bool(r is not None and np.all(np.isfinite(r)) and np.all(r < 0))
+
+    def snap(self, edges, control: Control) -> State | None:
+        """Equilibrium reached by an unstable growth of the contacts (or None).
+
+        Every edge that wants to grow (negative residual) is moved outward by a step that
+        doubles each time, edges that do not are held; one residual evaluation per step decides.
+        Once no edge wants to grow the equilibrium is solved from there, and contacts that meet
+        across the period give full contact.
+        """
+        x = np.asarray(edges, dtype=float).copy()
+        grow = np.ones(len(x), dtype=bool)
+        factor = 0.5
+        while factor < 1e4:
+            half = np.repeat(0.5 * (x[1::2] - x[0::2]), 2)
+            trial = x + np.where(grow, factor * half, 0.0) * np.tile([-1.0, 1.0], len(x) // 2)
+            factor *= 2.0
+            merged, changed, _, full = repair(trial, MIN_WIDTH, MIN_GAP)
+            if full:
+                if not control.is_load or self.closed.supports(control.value):
+                    return State.full_contact()
+                return None
+            r = self.eq.residual_at(merged, control)
+            if r is None:
+                continue
+            if not np.all(np.isfinite(r)):
+                return None
+            x, grow = merged, r < 0
+            if np.any(grow):
+                continue                  # some edge still wants to grow: widen it further
+            out = self.eq.solve(merged, control)
+            if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT):
+                return out
+            return None
+        return None
+
+    # ---- stability under load control ----------------------------------------------------------
+    def load_stiffness(self, state: State, eps: float) -> float:
+        """``dp̃∞/dΔ̃`` at a converged state, by one penetration-controlled solve at ``Δ̃ - eps``
+        (NaN when that solve does not converge)."""
+        fields = state.fields
+        trial = self.eq.solve(state.edges, Control.penetration_of(fields.penetration - eps),
+                              use_fallback=False, budget=APPROACH_BUDGET)
+        if trial.outcome is not Outcome.CONVERGED:
+            return np.nan
+        return (fields.mean_pressure - trial.fields.mean_pressure) / eps
+
+    def stable_under_load(self, out: State, target: Control) -> State:
+        """The approach's load-controlled root if it is stable, else the stable one below it.
+
+        An adhesive contact has roots of ``p̃∞(Ã) = target`` on a branch where the load falls as
+        the contact grows (``dp̃∞/dΔ̃ < 0``; Johnson's wavy contact between its load maximum and
+        closure). Under load control such a root is unstable: approached from first touch at a
+        fixed load, the contact stops growing at the first stable root, which has a smaller area.
+        The approach can still land on the unstable one when a jump overshoots the load maximum.
+        Then the penetration is lowered step by step, over the load maximum, until the load falls
+        below the target on the stable side (``dp̃∞/dΔ̃ > 0``), and the load-controlled root is
+        solved from the closer bracket. A root whose stiffness cannot be decided stays as it is
+        (an event says so); when no stable root is found the solve fails with the reason.
+        """
+        eq, log = self.eq, self.log
+        eps = 1e-3 * self.path_step
+        k = self.load_stiffness(out, eps)
+        if not np.isfinite(k):
+            log.event("stability under load control not decided: the perturbed "
+                      "penetration-controlled solve did not converge")
+            return out
+        if k >= 0:
+            return out
+        log.event(f"root unstable under load control (dp/dΔ = {k:.3g}); "
+                  "looking for the stable root at a smaller penetration")
+        goal = target.value
+        state, step = out, 0.125 * self.path_step
+        p_prev = out.fields.mean_pressure
+        for _ in range(400):                            # a guard; the march ends well before
+            if step < 1e-6 * self.path_step:
+                break
+            d_next = state.fields.penetration - step
+            trial = eq.solve(state.edges, Control.penetration_of(d_next), budget=APPROACH_BUDGET)
+            if trial.outcome is not Outcome.CONVERGED:
+                step *= 0.5
+                continue
+            p_next = trial.fields.mean_pressure
+            if p_next < goal and p_next < p_prev:       # crossed the target on the stable side
+                start = trial if goal - p_next < p_prev - goal else state
+                final = eq.solve(start.edges, target)
+                if final.outcome is Outcome.CONVERGED and self.load_stiffness(final, eps) >= 0:
+                    return final
+                break
+            state, p_prev = trial, p_next
+            step = min(1.5 * step, 0.5 * self.path_step)
+        return State(outcome=Outcome.NOT_CONVERGED, edges=out.edges, fields=out.fields,
+                     ctx=out.ctx, residual=out.residual,
+                     message="the equilibrium found is unstable under load control (dp̃∞/dΔ̃ = "
+                             f"{k:.3g} < 0) and no stable root was found at smaller penetration")
+
+    def from_full_contact(self, target: Control) -> State:
+        """Continue from a closed contact. With infinitely short-range adhesion a closed
+        interface has no flaw to open from (the energy release of a vanishing gap is zero), so
+        it stays closed at any load; without adhesion it stays closed while it carries no
+        tension, and otherwise the contact is found afresh along the approach path."""
+        if self.closed.holds(target):
+            return State.full_contact()
+        return self.approach(target)

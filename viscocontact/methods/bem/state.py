@@ -1,0 +1,64 @@
+"""What an equilibrium step returns, and the log a solve keeps."""
+from __future__ import annotations
+
+import enum
+from typing import Any
+
+import attrs
+import numpy as np
+
+
+class Outcome(enum.Enum):
+    """How an equilibrium step ended."""
+
+    CONVERGED = "converged"
+    NOT_CONVERGED = "not_converged"
+    FULL_CONTACT = "full_contact"
+    NO_CONTACT = "no_contact"
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class State:
+    """An equilibrium step's result: the outcome, the edges it ended at, the fixed-edge field
+    solution and edge context there (``None`` without contacts), the largest edge residual and a
+    message."""
+
+    outcome: Outcome
+    edges: np.ndarray
+    fields: Any = None
+    ctx: Any = None
+    residual: float = 0.0
+    message: str = ""
+
+    @property
+    def converged(self) -> bool:
+        return self.outcome is Outcome.CONVERGED
+
+    @classmethod
+    def full_contact(cls) -> "State":
+        return cls(outcome=Outcome.FULL_CONTACT, edges=np.zeros(0),
+                   message="contact closed over the period")
+
+    @classmethod
+    def no_contact(cls) -> "State":
+        return cls(outcome=Outcome.NO_CONTACT, edges=np.zeros(0), message="no contact at this load")
+
+
+class SolveLog:
+    """Counters, events and the residual history of one solve (reported in the result)."""
+
+    def __init__(self):
+        self.iterations = 0
+        self.evaluations = 0
+        self.events: list[str] = []
+        self.history: list[float] = []
+
+    def event(self, text: str) -> None:
+        self.events.append(text)
+
+    def count(self, system, result=None) -> None:
+        """Add a system's residual evaluations (and a solver result's iterations and history)."""
+        self.evaluations += system.evaluations
+        if result is not None:
+            self.iterations += result.iterations
+            self.history.extend(float(v) for v in result.residual_history)
