@@ -167,6 +167,7 @@ class _EdgeSystem:
         self._last_size = None      # max |r| where the previous Jacobian was taken
 
     def evaluate(self, x):
+        from .deadline import check as check_deadline; check_deadline()  # noqa: E702
         key = x.tobytes()
         if key in self.cache:
             return self.cache[key]
