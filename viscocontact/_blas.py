@@ -32,7 +32,8 @@ class _SharedLimit:
             for lib in threadpool_info():
                 if lib["user_api"] == "blas":
                     self._original.setdefault(lib["filepath"], lib["num_threads"])
-            threadpool_limits(limits=1, user_api="blas")
+            with _control():
+                threadpool_limits(limits=1, user_api="blas")
             self._inside += 1
 
     def exit(self) -> None:
@@ -41,8 +42,31 @@ class _SharedLimit:
         with self._lock:
             self._inside -= 1
             if self._inside == 0:
-                threadpool_limits(limits=dict(self._original))
+                with _control():
+                    threadpool_limits(limits=dict(self._original))
                 self._original.clear()
+
+
+@contextlib.contextmanager
+def _control() -> Iterator[None]:
+    """Let this thread set a process-wide BLAS pool, then let go of it.
+
+    threadpoolctl (from 3.8) lets only one thread, the first to set a limit, change a pool that
+    all threads share (OpenBLAS on pthreads); the others are silently ignored. Here the count of
+    :class:`_SharedLimit` decides between the blocks, so whichever thread enters first or leaves
+    last takes the control for its one change and gives it back.
+    """
+    from threadpoolctl import OpenBLASController
+
+    clear = getattr(OpenBLASController, "clear_controlling_thread", None)
+    if clear is None:                      # older threadpoolctl: any thread may set the pool
+        yield
+        return
+    clear(force=True)
+    try:
+        yield
+    finally:
+        clear()
 
 
 _SHARED = _SharedLimit()
