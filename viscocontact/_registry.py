@@ -11,11 +11,10 @@ plugins.
 from __future__ import annotations
 
 import difflib
-import warnings
 from importlib import metadata
 from typing import Any, Callable, Iterable
 
-from .errors import PluginError, PluginWarning
+from .errors import PluginError, PluginWarning, warn_user
 
 GROUPS = {
     "profiles": "viscocontact.profiles",
@@ -62,11 +61,11 @@ class Registry:
         if key in self._warned:
             return
         self._warned.add(key)
-        warnings.warn(
+        warn_user(
             f"{self.group} name {kept.name!r} is registered twice: by {_dist(kept)} "
             f"({kept.value}), which is used, and by {_dist(dropped)} ({dropped.value}), which "
             f"is ignored; uninstall one of them, or ask its authors to register another name",
-            PluginWarning, stacklevel=4)
+            PluginWarning)
 
     def names(self) -> list[str]:
         """Registered names (imports nothing)."""

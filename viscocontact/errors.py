@@ -9,6 +9,9 @@ A computation stopped by a :func:`~viscocontact.deadline.deadline` raises
 """
 from __future__ import annotations
 
+import sys
+import warnings
+
 
 class ViscoContactError(Exception):
     """Base class of all viscocontact errors."""
@@ -75,3 +78,20 @@ class PluginWarning(ViscoContactWarning):
 class ModelValidityWarning(ViscoContactWarning):
     """The scene lies where an assumption of the model is doubtful (e.g. a Tabor parameter
     below 3: infinitely short-range adhesion does not hold)."""
+
+
+def _internal(frame) -> bool:
+    """Whether a frame runs viscocontact's or attrs' code (``attrs.evolve``, generated
+    ``__init__``)."""
+    name = frame.f_globals.get("__name__") or ""
+    return (name.partition(".")[0] in ("viscocontact", "attr", "attrs")
+            or frame.f_code.co_filename.startswith("<attrs generated"))
+
+
+def warn_user(message: str, category: type[Warning]) -> None:
+    """``warnings.warn`` attributed to the first caller outside viscocontact and attrs, so that
+    the warning names the user's line (and the default filter shows it once per line)."""
+    level, frame = 2, sys._getframe(1)
+    while frame is not None and _internal(frame):
+        frame, level = frame.f_back, level + 1
+    warnings.warn(message, category, stacklevel=level if frame is not None else 2)
