@@ -1,33 +1,42 @@
-"""A wall-time limit for a block of code (``SIGALRM``), shared by the validation report and the
-benchmark harness."""
+"""Deprecated: the former ``SIGALRM`` time limit, now a thin wrapper over
+:func:`viscocontact.deadline.deadline` (cooperative, thread-safe, no signal)."""
 from __future__ import annotations
 
 import contextlib
-import signal
-import threading
+import time
+import warnings
 from typing import Callable, Iterator
+
+from .deadline import deadline
+from .errors import TimeLimitExceeded
 
 
 @contextlib.contextmanager
-def time_limit(seconds: float, error: Callable[[], BaseException]) -> Iterator[None]:
-    """Raise ``error()`` in the block after ``seconds`` of wall time.
+def time_limit(seconds: float | None, error: Callable[[], BaseException]) -> Iterator[None]:
+    """Raise ``error()`` once the block has run ``seconds`` of wall time.
 
-    Uses ``SIGALRM``, so it only acts in the main thread of a process (a pool's workers and a
-    serial runner); elsewhere, or without a limit (``seconds`` 0 or None), the block runs
-    unbounded. The previous handler is restored on exit.
+    .. deprecated:: 0.1.0
+       Use ``with viscocontact.deadline.deadline(seconds):``, which raises
+       :class:`~viscocontact.errors.TimeLimitExceeded`.
+
+    The limit is checked at every residual evaluation of a solve (see
+    :mod:`viscocontact.deadline`) and, as the former signal-based limit guaranteed that a block
+    never completed past its limit, once more when the block ends. A block that does not
+    evaluate residuals (``time.sleep``) therefore runs to its end before ``error()`` is raised.
+    No limit (``seconds`` 0 or None): the block runs unbounded.
     """
-    if (not seconds or not hasattr(signal, "setitimer")
-            or threading.current_thread() is not threading.main_thread()):
+    warnings.warn("viscocontact._alarm.time_limit is deprecated: use "
+                  "viscocontact.deadline.deadline", DeprecationWarning, stacklevel=3)
+    if not seconds:
         yield
         return
-
-    def alarm(signum, frame):
-        raise error()
-
-    previous = signal.signal(signal.SIGALRM, alarm)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
+    started = time.monotonic()
     try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+        with deadline(seconds):
+            yield
+    except TimeLimitExceeded as exc:
+        if exc.seconds != float(seconds):   # an enclosing, shorter limit: not ours to rename
+            raise
+        raise error() from exc
+    if time.monotonic() - started >= seconds:
+        raise error()

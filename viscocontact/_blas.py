@@ -3,73 +3,84 @@
 A multi-threaded BLAS sums in another order and changes the last bits of a factorisation; studies
 run every point, and the solver computes its cached calibration tables, with one thread, so that
 serial, process-pool and Dask runs agree bit for bit.
+
+The BLAS thread count is a setting of the whole process, not of a thread, so blocks entered from
+several threads at once (a Dask worker's threads) or nested (a study point around a solve) share
+one limit: every entry limits the BLAS libraries loaded by then (a library first loaded inside a
+block is limited at the next entry), and the last block out restores the counts each library had
+before the first block in.
 """
 from __future__ import annotations
 
 import contextlib
-import ctypes
-import os
-from typing import Callable, Iterator
+import threading
+from typing import Iterator
 
 
-_OPENBLAS_SYMBOLS = (("openblas_get_num_threads", "openblas_set_num_threads"),
-                     ("openblas_get_num_threads64_", "openblas_set_num_threads64_"),
-                     ("scipy_openblas_get_num_threads64_", "scipy_openblas_set_num_threads64_"),
-                     ("scipy_openblas_get_num_threads", "scipy_openblas_set_num_threads"))
+class _SharedLimit:
+    """One BLAS thread while at least one block is inside (the process-wide setting, counted)."""
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._inside = 0
+        self._original: dict[str, int] = {}   # library file -> its thread count before
+
+    def enter(self) -> None:
+        from threadpoolctl import threadpool_info, threadpool_limits
+
+        with self._lock:
+            for lib in threadpool_info():
+                if lib["user_api"] == "blas":
+                    self._original.setdefault(lib["filepath"], lib["num_threads"])
+            with _control():
+                threadpool_limits(limits=1, user_api="blas")
+            self._inside += 1
+
+    def exit(self) -> None:
+        from threadpoolctl import threadpool_limits
+
+        with self._lock:
+            self._inside -= 1
+            if self._inside == 0:
+                with _control():
+                    threadpool_limits(limits=dict(self._original))
+                self._original.clear()
 
 
-def _openblas_controls() -> list[tuple[Callable[[], int], Callable[[int], None]]]:
-    """(get, set) thread-count functions of every OpenBLAS loaded in this process (Linux)."""
+@contextlib.contextmanager
+def _control() -> Iterator[None]:
+    """Let this thread set a process-wide BLAS pool, then let go of it.
+
+    threadpoolctl (from 3.8) lets only one thread, the first to set a limit, change a pool that
+    all threads share (OpenBLAS on pthreads); the others are silently ignored. Here the count of
+    :class:`_SharedLimit` decides between the blocks, so whichever thread enters first or leaves
+    last takes the control for its one change and gives it back.
+    """
+    from threadpoolctl import OpenBLASController
+
+    clear = getattr(OpenBLASController, "clear_controlling_thread", None)
+    if clear is None:                      # older threadpoolctl: any thread may set the pool
+        yield
+        return
+    clear(force=True)
     try:
-        with open("/proc/self/maps", encoding="utf-8", errors="replace") as maps:
-            paths = {line.split()[-1] for line in maps if "openblas" in line.lower()}
-    except OSError:
-        return []
-    controls, seen = [], set()
-    for path in sorted(paths):
-        if not os.path.isfile(path):
-            continue
-        try:
-            lib = ctypes.CDLL(path)
-        except OSError:
-            continue
-        for get_name, set_name in _OPENBLAS_SYMBOLS:
-            get, put = getattr(lib, get_name, None), getattr(lib, set_name, None)
-            if get is None or put is None:
-                continue
-            address = ctypes.cast(put, ctypes.c_void_p).value
-            if address not in seen:
-                seen.add(address)
-                get.restype, put.argtypes = ctypes.c_int, [ctypes.c_int]
-                controls.append((get, put))
-            break
-    return controls
+        yield
+    finally:
+        clear()
+
+
+_SHARED = _SharedLimit()
 
 
 @contextlib.contextmanager
 def single_blas_thread() -> Iterator[None]:
     """Run the block with single-threaded BLAS, then restore the previous thread counts.
 
-    Uses :mod:`threadpoolctl` when it is installed, else the OpenBLAS libraries loaded in this
-    process (numpy's and scipy's wheels bundle one each); elsewhere it does nothing, and
-    bit-identical parallel runs then need ``OPENBLAS_NUM_THREADS=1`` in the environment.
+    Uses :mod:`threadpoolctl`, which finds every BLAS loaded in the process (numpy's and scipy's
+    OpenBLAS, MKL, BLIS). Thread-safe and nestable (see the module docstring).
     """
-    try:
-        from threadpoolctl import threadpool_limits
-    except ImportError:
-        threadpool_limits = None
-    if threadpool_limits is not None:
-        with threadpool_limits(limits=1, user_api="blas"):
-            yield
-        return
-    controls = _openblas_controls()
-    before = [get() for get, _ in controls]
-    for _, put in controls:
-        put(1)
+    _SHARED.enter()
     try:
         yield
     finally:
-        for (_, put), n in zip(controls, before):
-            put(n)
-
-
+        _SHARED.exit()

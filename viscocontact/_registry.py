@@ -3,8 +3,10 @@
 One small generic class serves the five component kinds. Listing names imports nothing; looking a
 name up loads the entry point, checks that it is a subclass of the kind's base class, and caches it.
 An unknown name lists the registered ones with a "did you mean"; a broken plugin fails only when it
-is asked for, chained to its original ImportError. Built-ins are registered through the package's
-own entry points, exactly like third-party plugins.
+is asked for, chained to its original ImportError. When two distributions register one name for
+different targets, the first found is used and a :class:`~viscocontact.errors.PluginWarning` names
+both. Built-ins are registered through the package's own entry points, exactly like third-party
+plugins.
 """
 from __future__ import annotations
 
@@ -12,7 +14,7 @@ import difflib
 from importlib import metadata
 from typing import Any, Callable, Iterable
 
-from .errors import PluginError
+from .errors import PluginError, PluginWarning, warn_user
 
 GROUPS = {
     "profiles": "viscocontact.profiles",
@@ -43,13 +45,27 @@ class Registry:
         self._base = base
         self._entry_points = entry_points or (lambda: metadata.entry_points(group=group))
         self._cache: dict[str, type] = {}
+        self._warned: set[tuple[str, str, str]] = set()
 
     def _eps(self) -> dict[str, metadata.EntryPoint]:
         found: dict[str, metadata.EntryPoint] = {}
         for ep in self._entry_points():
-            # First registration wins; a duplicate from another distribution is ignored.
-            found.setdefault(ep.name, ep)
+            # First registration wins; a clash with another target is warned about (once).
+            kept = found.setdefault(ep.name, ep)
+            if kept is not ep and kept.value != ep.value:
+                self._warn_clash(kept, ep)
         return found
+
+    def _warn_clash(self, kept: metadata.EntryPoint, dropped: metadata.EntryPoint) -> None:
+        key = (kept.name, kept.value, dropped.value)
+        if key in self._warned:
+            return
+        self._warned.add(key)
+        warn_user(
+            f"{self.group} name {kept.name!r} is registered twice: by {_dist(kept)} "
+            f"({kept.value}), which is used, and by {_dist(dropped)} ({dropped.value}), which "
+            f"is ignored; uninstall one of them, or ask its authors to register another name",
+            PluginWarning)
 
     def names(self) -> list[str]:
         """Registered names (imports nothing)."""
@@ -57,12 +73,8 @@ class Registry:
 
     def describe(self) -> list[dict[str, Any]]:
         """``[{"name": ..., "distribution": ...}, ...]`` for every registered name."""
-        out = []
-        for name, ep in sorted(self._eps().items()):
-            dist = getattr(ep, "dist", None)
-            out.append({"name": name, "distribution": getattr(dist, "name", None) if dist else None,
-                        "value": ep.value})
-        return out
+        return [{"name": name, "distribution": _dist(ep, None), "value": ep.value}
+                for name, ep in sorted(self._eps().items())]
 
     def __contains__(self, name: str) -> bool:
         return name in self._eps()
@@ -102,6 +114,12 @@ class Registry:
             if cached is cls:
                 return name
         raise PluginError(f"{target} is not registered in {self.group}")
+
+
+def _dist(ep: metadata.EntryPoint, unknown: Any = "an unknown distribution") -> Any:
+    """The name of the distribution that provides ``ep`` (``unknown`` when it has none)."""
+    name = getattr(getattr(ep, "dist", None), "name", None)
+    return name if name else unknown
 
 
 def _base(kind: str) -> Callable[[], type]:

@@ -9,14 +9,15 @@ files, TOML syntax) print one line to stderr and return exit code 2, never a tra
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import tomllib
+import warnings
 from typing import Callable, Sequence
 
 from .errors import ValidationError, ViscoContactError
 
 EXIT_USAGE = 2
+_PROG = "viscocontact"
 
 
 # ---- describe -----------------------------------------------------------------------------------
@@ -33,14 +34,19 @@ def _format_value(value) -> str:
 
 def _run_describe(args: argparse.Namespace) -> int:
     """Print the dimensionless groups of a scene (and its Tabor parameter)."""
+    from ._json import dumps
+    from .errors import ModelValidityWarning
     from .groups import dimensionless_groups
     from .scene import Scene
 
-    groups = dimensionless_groups(Scene.from_toml(_path(args.scene)))
+    with warnings.catch_warnings():     # listed below, with the groups they come from
+        warnings.simplefilter("ignore", ModelValidityWarning)
+        scene = Scene.from_toml(_path(args.scene))
+    groups = dimensionless_groups(scene)
     for message in groups["warnings"]:
-        print(f"warning: {message}", file=sys.stderr)
+        print(f"{_PROG} describe: warning: {message}", file=sys.stderr)
     if args.json:
-        print(json.dumps(groups, indent=2, ensure_ascii=False))
+        print(dumps(groups, indent=2, ensure_ascii=False))
         return 0
     width = max(len(k) for k in groups)
     for key, value in groups.items():
@@ -73,7 +79,9 @@ def _run_plugins(args: argparse.Namespace) -> int:
                      for d in registry.describe()]
              for group, registry in REGISTRIES.items()}
     if args.json:
-        print(json.dumps(table, indent=2))
+        from ._json import dumps
+
+        print(dumps(table, indent=2))
         return 0
     for group, entries in table.items():
         print(f"{group}:")
@@ -141,8 +149,10 @@ def _run_solve(args: argparse.Namespace) -> int:
         options["kernel_tolerance"] = args.kernel_tolerance
     problem = ContactProblem.from_scene(scene, **options)
     if args.explain:
+        from ._json import dumps
+
         plan = problem.plan()
-        print(json.dumps(plan.to_dict(), ensure_ascii=False, indent=2) if args.json else plan)
+        print(dumps(plan.to_dict(), ensure_ascii=False, indent=2) if args.json else plan)
         return 0
     result = problem.solve(fields=args.fields)
     if args.json:
@@ -471,6 +481,15 @@ def _one_line(message: str) -> str:
     return " ".join(str(message).split())
 
 
+def _one_line_warning(command: str):
+    """A :func:`warnings.showwarning` that prints ``viscocontact COMMAND: warning: ...`` (the
+    file and line of a library warning mean nothing to a command-line user)."""
+    def show(message, category, filename, lineno, file=None, line=None):
+        print(f"{_PROG} {command}: warning: {_one_line(message)}", file=file or sys.stderr)
+
+    return show
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit code (0 success, 2 bad input)."""
     parser = build_parser()
@@ -479,7 +498,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SystemExit as exc:  # --help, --version, usage errors (argparse already printed)
         return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USAGE
     try:
-        return args.run(args)
+        with warnings.catch_warnings():
+            warnings.showwarning = _one_line_warning(args.command)
+            return args.run(args)
     except ViscoContactError as exc:  # ValidationError, PluginError, StudyFileError
         print(f"viscocontact {args.command}: error: {_one_line(exc)}", file=sys.stderr)
     except tomllib.TOMLDecodeError as exc:

@@ -1,9 +1,16 @@
-"""Exceptions raised by viscocontact.
+"""Exceptions and warnings raised by viscocontact.
 
 Every error about user input is a :class:`ValidationError` whose message names the field, the
 offending value and the allowed range, so that a scene file can be fixed without reading a traceback.
+A computation stopped by a :func:`~viscocontact.deadline.deadline` raises
+:class:`TimeLimitExceeded`. Warnings the user must see are subclasses of
+:class:`ViscoContactWarning`, issued with :func:`warnings.warn` (filter them with the standard
+:mod:`warnings` machinery).
 """
 from __future__ import annotations
+
+import sys
+import warnings
 
 
 class ViscoContactError(Exception):
@@ -40,3 +47,51 @@ class ConvergenceError(ViscoContactError):
     def __init__(self, message: str, result: object = None):
         super().__init__(message)
         self.result = result
+
+
+class TimeLimitExceeded(ViscoContactError):
+    """A computation ran past the wall-time limit of an enclosing
+    :func:`~viscocontact.deadline.deadline`.
+
+    Parameters
+    ----------
+    seconds : float
+        The limit that was reached (s).
+    """
+
+    def __init__(self, seconds: float):
+        self.seconds = seconds
+        super().__init__(f"time limit of {seconds:g} s reached")
+
+    def __reduce__(self):  # pickles with its limit (process pools, Dask)
+        return type(self), (self.seconds,)
+
+
+class ViscoContactWarning(UserWarning):
+    """Base class of the warnings viscocontact issues."""
+
+
+class PluginWarning(ViscoContactWarning):
+    """Two installed distributions register the same component name; one of them is ignored."""
+
+
+class ModelValidityWarning(ViscoContactWarning):
+    """The scene lies where an assumption of the model is doubtful (e.g. a Tabor parameter
+    below 3: infinitely short-range adhesion does not hold)."""
+
+
+def _internal(frame) -> bool:
+    """Whether a frame runs viscocontact's or attrs' code (``attrs.evolve``, generated
+    ``__init__``)."""
+    name = frame.f_globals.get("__name__") or ""
+    return (name.partition(".")[0] in ("viscocontact", "attr", "attrs")
+            or frame.f_code.co_filename.startswith("<attrs generated"))
+
+
+def warn_user(message: str, category: type[Warning]) -> None:
+    """``warnings.warn`` attributed to the first caller outside viscocontact and attrs, so that
+    the warning names the user's line (and the default filter shows it once per line)."""
+    level, frame = 2, sys._getframe(1)
+    while frame is not None and _internal(frame):
+        frame, level = frame.f_back, level + 1
+    warnings.warn(message, category, stacklevel=level if frame is not None else 2)

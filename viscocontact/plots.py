@@ -1,4 +1,4 @@
-"""Figures of a study file (matplotlib, Agg backend; imported only when plotting).
+"""Figures of a study file (matplotlib, imported only when plotting).
 
 * a sweep: contact area Ã and reduced friction μ/√m2 against ζ (thesis Figs. 4.7, 4.10),
   adhesive solid, adhesionless dashed, one colour per load; with realizations the mean and its
@@ -20,21 +20,26 @@ import numpy as np
 ZETA_LABEL = "ζ = q0 V τ"
 
 
-def _pyplot():
+def _figure(**options):
+    """A :class:`matplotlib.figure.Figure` that is no part of pyplot's state: drawing it to a
+    file neither selects nor switches the caller's backend, nor leaves a figure open."""
+    from matplotlib.figure import Figure
+
+    return Figure(**options)
+
+
+def _colors() -> list:
+    """The colours of matplotlib's property cycle (``rcParams``)."""
     import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
+    return matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
 
 
-def _save(plt, fig, path, dpi: int = 90) -> Path:
-    """Lay out, write and close ``fig``; the path written."""
+def _save(fig, path, dpi: int = 90) -> Path:
+    """Lay out and write ``fig``; the path written."""
     fig.tight_layout()
     path = Path(path)
     fig.savefig(path, dpi=dpi)
-    plt.close(fig)
     return path
 
 
@@ -76,7 +81,6 @@ def _xscale(ax, zetas) -> None:
 
 def plot_sweep(data, out: Path, prefix: str) -> list[Path]:
     """``<prefix>_area.png`` and ``<prefix>_friction.png`` of a sweep."""
-    plt = _pyplot()
     axes = data.axes()
     zetas = np.asarray(axes["zeta"])
     control = "p̃∞" if data.study.control == "mean_pressure" else "Δ̃"
@@ -85,8 +89,9 @@ def plot_sweep(data, out: Path, prefix: str) -> list[Path]:
     for key, ylabel, name in (("area", "contact area Ã", "area"),
                               ("reduced_friction", "reduced friction μ/√m2", "friction")):
         band = data.band(key)
-        fig, ax = plt.subplots(figsize=(6.4, 4.2))
-        colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        fig = _figure(figsize=(6.4, 4.2))
+        ax = fig.subplots()
+        colors = _colors()
         for iv, variant in enumerate(axes["variant"]):
             style = "-o" if variant == "adhesive" else "--s"
             for il, load in enumerate(axes["load"]):
@@ -105,11 +110,7 @@ def plot_sweep(data, out: Path, prefix: str) -> list[Path]:
                          f"{100 * band.confidence:.0f}% confidence band")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        path = out / f"{prefix}_{name}.png"
-        fig.savefig(path, dpi=120)
-        plt.close(fig)
-        files.append(path)
+        files.append(_save(fig, out / f"{prefix}_{name}.png", dpi=120))
     return files
 
 
@@ -118,10 +119,10 @@ def plot_cycle(data, out: Path, prefix: str) -> list[Path]:
     ζ) when the study has several ζ."""
     from .studies.realizations import confidence_band
 
-    plt = _pyplot()
     cycles = data.cycles()
-    fig, (ax_p, ax_a) = plt.subplots(1, 2, figsize=(10, 4.2))
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig = _figure(figsize=(10, 4.2))
+    ax_p, ax_a = fig.subplots(1, 2)
+    colors = _colors()
     for i, cyc in enumerate(cycles):
         pts = cyc["points"]
         if not len(pts["chain"]):
@@ -152,15 +153,13 @@ def plot_cycle(data, out: Path, prefix: str) -> list[Path]:
     ax_p.axhline(0.0, color="k", lw=0.5)
     ax_p.legend(fontsize=8)
     fig.suptitle("approach (solid) and retraction (dashed)", fontsize=10)
-    fig.tight_layout()
-    files = [out / f"{prefix}_cycle.png"]
-    fig.savefig(files[0], dpi=120)
-    plt.close(fig)
+    files = [_save(fig, out / f"{prefix}_cycle.png", dpi=120)]
 
     metrics = data.metrics()
     if len(metrics["zeta"]) > 1:
         band = confidence_band(metrics["toughness"], axis=2)
-        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        fig = _figure(figsize=(6.4, 4.2))
+        ax = fig.subplots()
         for ig, gamma in enumerate(metrics["gamma"]):
             label = f"γ̃ = {gamma:g}" if np.isfinite(gamma) else None
             ax.plot(metrics["zeta"], band.mean[:, ig], "-o", ms=3, label=label)
@@ -173,10 +172,7 @@ def plot_cycle(data, out: Path, prefix: str) -> list[Path]:
         ax.grid(alpha=0.3)
         if ax.get_legend_handles_labels()[0]:
             ax.legend(fontsize=8)
-        fig.tight_layout()
-        files.append(out / f"{prefix}_toughness.png")
-        fig.savefig(files[-1], dpi=120)
-        plt.close(fig)
+        files.append(_save(fig, out / f"{prefix}_toughness.png", dpi=120))
     return files
 
 
@@ -208,10 +204,9 @@ def draw_sweep(ax, data, quantity: str, *, label: str = "", colors=None, marker:
     variants : sequence of str, optional
         Which of ``"adhesive"``/``"adhesionless"`` to draw (default: all in the file).
     """
-    plt = _pyplot()
     axes = data.axes()
     zetas = np.asarray(axes["zeta"])
-    colors = colors or plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colors = colors or _colors()
     control = r"$\tilde p_\infty$" if data.study.control == "mean_pressure" else r"$\tilde\Delta$"
     band = data.band(quantity)
     several = len(axes["seed"]) > 1
@@ -253,8 +248,8 @@ def plot_panels(panels, path, *, title: str | None = None, width: float = 5.2,
     -------
     Path
     """
-    plt = _pyplot()
-    fig, axs = plt.subplots(1, len(panels), figsize=(width * len(panels), height), squeeze=False)
+    fig = _figure(figsize=(width * len(panels), height))
+    axs = fig.subplots(1, len(panels), squeeze=False)
     for ax, panel in zip(axs[0], panels):
         for curve in panel["curves"]:
             draw_sweep(ax, curve["data"], panel["quantity"],
@@ -264,7 +259,7 @@ def plot_panels(panels, path, *, title: str | None = None, width: float = 5.2,
         ax.legend(fontsize=6.5)
     if title:
         fig.suptitle(title, fontsize=10)
-    return _save(plt, fig, path)
+    return _save(fig, path)
 
 
 def plot_cycles_panels(panels, path, *, title: str | None = None) -> Path:
@@ -283,8 +278,8 @@ def plot_cycles_panels(panels, path, *, title: str | None = None) -> Path:
     -------
     Path
     """
-    plt = _pyplot()
-    fig, axs = plt.subplots(1, len(panels), figsize=(5.2 * len(panels), 4.0), squeeze=False)
+    fig = _figure(figsize=(5.2 * len(panels), 4.0))
+    axs = fig.subplots(1, len(panels), squeeze=False)
     for ax, panel in zip(axs[0], panels):
         i = 0
         for curve in panel["curves"]:
@@ -319,7 +314,7 @@ def plot_cycles_panels(panels, path, *, title: str | None = None) -> Path:
         ax.legend(fontsize=7)
     if title:
         fig.suptitle(title, fontsize=10)
-    return _save(plt, fig, path)
+    return _save(fig, path)
 
 
 def _branches(pts):
@@ -351,8 +346,8 @@ def plot_toughness(curves, path, *, title: str | None = None) -> Path:
     """
     from .studies.realizations import confidence_band
 
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(5.6, 4.0))
+    fig = _figure(figsize=(5.6, 4.0))
+    ax = fig.subplots()
     for curve in curves:
         metrics = curve["data"].metrics()
         band = confidence_band(metrics["toughness"], axis=2)
@@ -375,7 +370,7 @@ def plot_toughness(curves, path, *, title: str | None = None) -> Path:
     ax.legend(fontsize=7)
     if title:
         ax.set_title(title, fontsize=10)
-    return _save(plt, fig, path)
+    return _save(fig, path)
 
 
 def plot_solution_fields(solutions, path, *, title: str | None = None) -> Path:
@@ -394,8 +389,8 @@ def plot_solution_fields(solutions, path, *, title: str | None = None) -> Path:
     -------
     Path
     """
-    plt = _pyplot()
-    fig, (ax_p, ax_g) = plt.subplots(2, 1, figsize=(7.0, 5.6), sharex=True)
+    fig = _figure(figsize=(7.0, 5.6))
+    ax_p, ax_g = fig.subplots(2, 1, sharex=True)
     for sol in solutions:
         f = sol["fields"]
         style = sol.get("style", "-")
@@ -410,4 +405,4 @@ def plot_solution_fields(solutions, path, *, title: str | None = None) -> Path:
     ax_p.legend(fontsize=7)
     if title:
         ax_p.set_title(title, fontsize=10)
-    return _save(plt, fig, path)
+    return _save(fig, path)

@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import enum
-import json
 from typing import Any
 
 import attrs
@@ -18,7 +17,7 @@ class SolveStatus(enum.Enum):
     FAILED = "failed"
 
 
-@attrs.frozen(kw_only=True)
+@attrs.frozen(kw_only=True, repr=False)
 class ContactResult:
     """Equilibrium of one scene (dimensionless, eq. 4.17).
 
@@ -81,7 +80,12 @@ class ContactResult:
     extras: dict = attrs.field(factory=dict)
 
     def to_dict(self, *, with_fields: bool = False) -> dict:
-        """JSON-ready dictionary (the keys of ``viscocontact solve --json``)."""
+        """The result as plain Python data (the keys of ``viscocontact solve --json``).
+
+        Numbers are Python floats and ints; NaN and inf are kept as floats (a friction
+        coefficient without contact is NaN, the gap without contact inf): :meth:`to_json` writes
+        them as ``null``.
+        """
         out = {
             "area": self.area, "mean_pressure": self.mean_pressure,
             "penetration": self.penetration, "friction": self.friction,
@@ -93,12 +97,12 @@ class ContactResult:
             "zeta": self.zeta, "edge_perturbation": self.edge_perturbation,
             "min_gap": self.min_gap,
         }
+        out = {k: v.item() if isinstance(v, np.generic) else v for k, v in out.items()}
         if self.edge_terms is not None:
             t = self.edge_terms
             out["edge_terms"] = {
                 "stored": t.stored.tolist(), "nonconservative": t.nonconservative.tolist(),
-                "target": t.target, "effective_work": [None if np.isnan(v) else float(v)
-                                                       for v in t.effective_work],
+                "target": t.target, "effective_work": [float(v) for v in t.effective_work],
                 "stress_intensity": t.stress_intensity.tolist(),
                 "edge_perturbation": t.edge_perturbation}
         if with_fields and self.fields is not None:
@@ -106,8 +110,17 @@ class ContactResult:
         return out
 
     def to_json(self, **kw) -> str:
-        def default(o):
-            if isinstance(o, (np.floating, np.integer)):
-                return o.item()
-            raise TypeError(type(o))
-        return json.dumps(self.to_dict(**kw), default=default, allow_nan=True)
+        """Strict JSON text of :meth:`to_dict` (``kw`` are its keywords): every non-finite number
+        (NaN friction without contact, infinite gap) is written ``null``."""
+        from ._json import dumps
+
+        return dumps(self.to_dict(**kw))
+
+    def __repr__(self) -> str:
+        method = self.extras.get("method") if isinstance(self.extras, dict) else None
+        contacts = "full contact" if self.full_contact else (
+            f"{self.n_contacts} contact{'s' if self.n_contacts != 1 else ''}")
+        text = (f"<ContactResult {self.status.value}: Ã={self.area:.6g}, "
+                f"p̃∞={self.mean_pressure:.6g}, Δ̃={self.penetration:.6g}, "
+                f"μ={self.friction:.6g}, {contacts}")
+        return text + (f", method={method!r}>" if method is not None else ">")

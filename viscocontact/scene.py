@@ -413,6 +413,21 @@ class Scene:
                                                          "(one material, one Poisson ratio)")
         if self.physical is not None:
             self._check_physical_agrees()
+            self._warn_outside_model()
+
+    def _warn_outside_model(self) -> None:
+        """A :class:`~viscocontact.errors.ModelValidityWarning` for each doubt that
+        ``viscocontact describe`` lists: a Tabor parameter below 3 (eq. 1.48; rubbery, or glassy
+        at high ζ) for an adhesive scene given in physical units, where the infinitely
+        short-range (JKR-like) adhesion of the energy balance does not hold."""
+        if not self.adhesive or not {"E0", "wavelength"} <= set(self.physical):
+            return
+        from .errors import ModelValidityWarning, warn_user
+        from .groups import dimensionless_groups
+
+        for message in dimensionless_groups(self)["warnings"]:
+            warn_user(f"{message} (viscocontact describe shows μ_T and its inputs)",
+                      ModelValidityWarning)
 
     # ---- physical consistency --------------------------------------------------------------
     def _section_value(self, section: str, key: str) -> tuple[Any, bool | None]:

@@ -20,6 +20,8 @@ from typing import Any, Mapping
 import attrs
 import numpy as np
 
+from ..errors import TimeLimitExceeded
+
 #: Record columns written for every point: name -> kind (``int``, ``float``, ``bool``, ``str`` or
 #: ``edges``, a flattened ``[X̃_start, X̃_end, ...]`` array of variable length).
 COLUMNS: dict[str, str] = {
@@ -42,6 +44,10 @@ TIMING_COLUMNS = ("seconds",)
 FIRST_TOUCH, NEIGHBOUR, NO_CONTACT = "first touch", "neighbour", "no contact"
 
 ERROR = "error"
+
+#: The former name of the time-limit error (0.1.0); a point past its limit raises
+#: :class:`~viscocontact.errors.TimeLimitExceeded`, recorded as its message.
+PointTimeout = TimeLimitExceeded
 
 
 @attrs.frozen(kw_only=True)
@@ -75,10 +81,6 @@ class PointSpec:
     labels: Mapping[str, Any] = attrs.field(factory=dict)
 
 
-class PointTimeout(Exception):
-    """A point ran past the study's time limit."""
-
-
 def solve_point(scene: Mapping[str, Any], spec: PointSpec,
                 initial: np.ndarray | None = None,
                 time_limit: float | None = None) -> dict[str, Any]:
@@ -94,8 +96,11 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
         no contact, ``None`` follows the approach path from first touch.
     time_limit : float or None
         Seconds of wall time after which the solve is abandoned and the point recorded as an
-        error with the reason (``SIGALRM``: enforced in the main thread of a process, i.e. the
-        serial runner and worker processes, not in a Dask worker's threads).
+        error with the reason ("TimeLimitExceeded: time limit of ... s reached"). The limit is a
+        cooperative :func:`~viscocontact.deadline.deadline`, checked at every residual
+        evaluation: it holds in any thread (serial runner, worker processes, Dask worker
+        threads) and within an enclosing deadline, but not inside the kernel-table
+        precomputation, which runs to its end.
 
     Returns
     -------
@@ -104,13 +109,12 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     """
     from .parallel import single_blas_thread
 
+    from ..deadline import deadline
+
     t0 = time.perf_counter()
     record = _skeleton(scene, spec)
-    from .._alarm import time_limit as limit
-
     try:
-        with single_blas_thread(), limit(time_limit, lambda: PointTimeout(
-                f"time limit of {time_limit:g} s reached")):
+        with single_blas_thread(), deadline(time_limit):
             result = _solve(scene, spec, initial)
     except Exception as exc:  # stored with its reason; the study goes on
         record.update(status=ERROR, converged=False, message=f"{type(exc).__name__}: {exc}")

@@ -35,9 +35,12 @@ def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = 
     progress : file or None
         Where the progress bar goes (default stderr; None: silent).
     time_limit : float or None
-        Seconds allowed to one point; a point past it is stored as an error ("time limit of
-        ... s reached") and its chain goes on from the last converged point (enforced in this
-        process and in worker processes, not on a Dask scheduler's threads).
+        Seconds allowed to one point; a point past it is stored as an error
+        ("TimeLimitExceeded: time limit of ... s reached") and its chain goes on from the last
+        converged point. The limit is a cooperative :func:`~viscocontact.deadline.deadline`
+        checked at every residual evaluation, so it holds in this process, in worker processes
+        and in Dask worker threads alike, and leaves any ``SIGALRM`` timer of the caller alone;
+        it cannot stop a kernel-table precomputation, which runs to its end.
 
     Notes
     -----

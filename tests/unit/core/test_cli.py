@@ -20,10 +20,29 @@ def run(capsys, *argv):
     return code, out, err
 
 
+def _reject(constant):
+    raise AssertionError(f"{constant} is not JSON")
+
+
+def strict(text: str):
+    """``json.loads`` that refuses ``NaN``, ``Infinity`` and ``-Infinity`` (RFC 8259)."""
+    return json.loads(text, parse_constant=_reject)
+
+
+NO_CONTACT = ('[profile]\nkind = "sinusoid"\namplitude = 0.1\n'
+              '[rheology]\nkind = "standard-linear-solid"\nbeta = 10.0\n'
+              '[load]\npenetration = -0.5\n[sliding]\nzeta = 1.0\n')
+
+LOW_TABOR = ('[profile]\nkind = "sinusoid"\n[rheology]\nkind = "elastic"\n'
+             '[load]\npenetration = 0.5\n'
+             '[physical]\nE0 = 2e11\nwavelength = 1e-4\namplitude = 1e-6\n'
+             'work_of_adhesion = 0.01\n')
+
+
 def test_describe_json_sinusoid(capsys):
     code, out, err = run(capsys, "describe", str(EXAMPLES / "sinusoid.toml"), "--json")
     assert code == 0 and err == ""
-    groups = json.loads(out)
+    groups = strict(out)
     assert GROUP_KEYS <= set(groups)
     assert groups["gamma"] == 1e-5 and groups["amplitude"] == 0.05
     assert groups["Gamma"] == pytest.approx(1e-5 / 0.05**2)
@@ -35,7 +54,7 @@ def test_describe_json_sinusoid(capsys):
 def test_describe_json_thesis(capsys):
     code, out, err = run(capsys, "describe", str(EXAMPLES / "thesis_rough.toml"), "--json")
     assert code == 0
-    groups = json.loads(out)
+    groups = strict(out)
     assert groups["tabor"] == pytest.approx(383.0, rel=1e-3)
     assert groups["gamma"] == pytest.approx(2.387e-7, rel=1e-3)
     assert groups["hurst"] == 0.8 and groups["scales"] == 50
@@ -51,20 +70,66 @@ def test_describe_text(capsys):
 
 def test_describe_warns_on_small_tabor(capsys, tmp_path):
     scene = tmp_path / "hard.toml"
-    scene.write_text(
-        '[profile]\nkind = "sinusoid"\n[rheology]\nkind = "elastic"\n'
-        '[load]\npenetration = 0.5\n'
-        '[physical]\nE0 = 2e11\nwavelength = 1e-4\namplitude = 1e-6\nwork_of_adhesion = 0.01\n')
+    scene.write_text(LOW_TABOR)
     code, out, err = run(capsys, "describe", str(scene), "--json")
     assert code == 0
-    assert json.loads(out)["tabor"] < 3
-    assert err.startswith("warning: Tabor parameter") and "< 3" in err
+    assert strict(out)["tabor"] < 3
+    lines = err.splitlines()               # once, though building the scene warns too
+    assert len(lines) == 1
+    assert lines[0].startswith("viscocontact describe: warning: Tabor parameter")
+    assert "< 3" in lines[0]
+
+
+def test_other_commands_show_the_scene_warning_on_one_line(capsys, tmp_path):
+    scene = tmp_path / "hard.toml"
+    scene.write_text(LOW_TABOR)
+    code, out, err = run(capsys, "solve", str(scene), "--explain")
+    assert code == 0
+    assert err.splitlines() == [line for line in err.splitlines()
+                                if line.startswith("viscocontact solve: warning: Tabor")]
+    assert len(err.splitlines()) == 1 and "< 3" in err
+
+
+def test_solve_json_without_contact_is_strict_json(capsys, tmp_path):
+    """No contact: the friction coefficient is undefined and the gap infinite; both are null,
+    not NaN/Infinity, which strict JSON readers reject."""
+    scene = tmp_path / "apart.toml"
+    scene.write_text(NO_CONTACT)
+    code, out, err = run(capsys, "solve", str(scene), "--json")
+    assert code == 0
+    result = strict(out)
+    assert result["status"] == "no_contact" and result["area"] == 0.0
+    assert result["friction"] is None and result["reduced_friction"] is None
+    assert result["min_gap"] is None
+    assert result["penetration"] == -0.5
+
+
+def test_explain_json_is_strict_json(capsys, tmp_path):
+    scene = tmp_path / "apart.toml"
+    scene.write_text(NO_CONTACT)
+    for path in (scene, EXAMPLES / "thesis_rough.toml"):
+        code, out, err = run(capsys, "solve", str(path), "--explain", "--json")
+        assert code == 0
+        assert {"stage", "choice", "reason"} <= set(strict(out)[0])
+
+
+def test_importing_the_main_module_runs_nothing(capsys, monkeypatch):
+    """``import viscocontact.__main__`` (documentation tools, test collectors) must not run
+    the command line; ``python -m viscocontact`` does (test below)."""
+    import importlib
+    import sys
+
+    monkeypatch.setattr(sys, "argv", ["viscocontact", "solve", "no-such-scene.toml"])
+    monkeypatch.delitem(sys.modules, "viscocontact.__main__", raising=False)
+    module = importlib.import_module("viscocontact.__main__")
+    assert module.main is main
+    assert capsys.readouterr() == ("", "")
 
 
 def test_plugins_json(capsys):
     code, out, err = run(capsys, "plugins", "--json")
     assert code == 0
-    table = json.loads(out)
+    table = strict(out)
     assert set(table) == {"profiles", "rheologies", "kernels", "solvers", "adhesion"}
     names = {group: {e["name"] for e in entries} for group, entries in table.items()}
     assert {"sinusoid", "self-affine", "measured"} <= names["profiles"]

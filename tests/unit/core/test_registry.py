@@ -4,13 +4,15 @@ from __future__ import annotations
 import importlib
 import sys
 import uuid
+import warnings
+from importlib import metadata
 from importlib.metadata import EntryPoint
 
 import pytest
 
 from viscocontact import _registry
 from viscocontact._registry import Registry
-from viscocontact.errors import PluginError
+from viscocontact.errors import PluginError, PluginWarning
 
 GROUP = "viscocontact.things"
 
@@ -95,9 +97,52 @@ def test_broken_plugin_fails_only_when_asked(plugin_module):
     assert isinstance(info.value.__cause__, ImportError)
 
 
-def test_first_registration_wins():
+def distribution(root, name, entries):
+    """An installed-looking distribution ``name`` (a ``.dist-info`` folder under ``root``)
+    registering ``entries`` (``{entry name: target}``) in GROUP; its entry points carry it as
+    ``ep.dist``, as ``importlib.metadata.entry_points()`` gives them."""
+    info = root / f"{name.replace('-', '_')}-1.0.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text(f"Metadata-Version: 2.1\nName: {name}\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text(
+        f"[{GROUP}]\n" + "".join(f"{k} = {v}\n" for k, v in entries.items()))
+    return list(metadata.PathDistribution(info).entry_points.select(group=GROUP))
+
+
+def test_first_registration_wins_and_the_clash_is_warned(tmp_path):
+    """Two distributions registering one name for different classes: the first found is used,
+    and a warning names both distributions and says which one is used; once per registry."""
+    eps = (distribution(tmp_path, "pkg-first", {"x": "first_mod:A", "y": "first_mod:Y"})
+           + distribution(tmp_path, "pkg-second", {"x": "second_mod:B"}))
+    reg = make_registry(eps)
+    with pytest.warns(PluginWarning) as record:
+        names = reg.names()
+    assert names == ["x", "y"]
+    assert len(record) == 1
+    message = str(record[0].message)
+    assert "'x'" in message and GROUP in message
+    assert "by pkg-first (first_mod:A), which is used" in message
+    assert "by pkg-second (second_mod:B), which is ignored" in message
+    assert reg.describe()[0] == {"name": "x", "distribution": "pkg-first", "value": "first_mod:A"}
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        reg.names()                     # already said: no second warning from this registry
+    assert "second_mod" not in sys.modules and "first_mod" not in sys.modules
+
+
+def test_same_target_registered_twice_is_not_a_clash(tmp_path):
+    eps = (distribution(tmp_path, "pkg-one", {"x": "mod:A"})
+           + distribution(tmp_path, "pkg-two", {"x": "mod:A"}))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert make_registry(eps).describe() == [{"name": "x", "distribution": "pkg-one",
+                                                  "value": "mod:A"}]
+
+
+def test_clash_without_distribution_metadata_is_still_named():
     reg = make_registry([ep("x", "first_mod:A"), ep("x", "second_mod:B")])
-    assert reg.describe() == [{"name": "x", "distribution": None, "value": "first_mod:A"}]
+    with pytest.warns(PluginWarning, match="unknown distribution"):
+        assert reg.describe() == [{"name": "x", "distribution": None, "value": "first_mod:A"}]
 
 
 def test_name_of(plugin_module):

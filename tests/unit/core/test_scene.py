@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import math
 import tomllib
+import warnings
 from importlib.metadata import EntryPoint
 from pathlib import Path
 
@@ -13,7 +14,7 @@ from hypothesis import strategies as st
 
 from viscocontact import _registry
 from viscocontact._toml import dumps
-from viscocontact.errors import PluginError, ValidationError
+from viscocontact.errors import ModelValidityWarning, PluginError, ValidationError
 from viscocontact.groups import dimensionless_groups, tabor_parameter
 from viscocontact.kernels.half_plane import HalfPlane
 from viscocontact.kernels.layers import ConfinedLayer
@@ -122,6 +123,7 @@ def test_round_trip_over_parameters(profile, rheology, kernel, load, gamma, zeta
     assert scene.to_dict()["load"] == load
 
 
+@pytest.mark.filterwarnings("ignore::viscocontact.errors.ModelValidityWarning")  # any μ_T here
 @settings(max_examples=25, deadline=None)
 @given(e0=st.floats(1e5, 1e10), lam=st.floats(1e-5, 1e-1), rms_ratio=st.floats(1e-4, 1e-1),
        dgamma=st.floats(1e-4, 1.0), p=st.floats(-1e5, 1e6), v=st.floats(0.0, 10.0),
@@ -192,7 +194,8 @@ def test_tabor_from_dimensionless_gamma_and_warning():
     # hard solid: E0 = 100 GPa, γ̃ given dimensionless, Δγ derived from it
     phys = {"E0": 1e11, "wavelength": 1e-3, "rms": 1e-6}
     d = rough_dict(phys, adhesion={"kind": "energy-balance", "gamma": 1e-9})
-    groups = dimensionless_groups(Scene.from_dict(d))
+    with pytest.warns(ModelValidityWarning, match="Tabor parameter"):
+        groups = dimensionless_groups(Scene.from_dict(d))
     q0 = 2 * math.pi / 1e-3
     dgamma = 1e-9 * math.pi * 1e11 / (0.75 * q0)
     expected = tabor_parameter(radius=1 / (q0**2 * 1e-6), work_of_adhesion=dgamma,
@@ -200,6 +203,46 @@ def test_tabor_from_dimensionless_gamma_and_warning():
     assert groups["tabor"] == pytest.approx(expected, rel=1e-6)
     assert groups["tabor"] < 3
     assert any("< 3" in w for w in groups["warnings"])
+
+
+LOW_TABOR = {"profile": {"kind": "sinusoid"}, "rheology": {"kind": "elastic"},
+             "load": {"penetration": 0.5},
+             "physical": {"E0": 2e11, "wavelength": 1e-4, "amplitude": 1e-6,
+                          "work_of_adhesion": 0.01}}
+
+
+def test_low_tabor_parameter_warns_when_the_scene_is_built():
+    """A stiff solid with weak adhesion on a short wavelength: μ_T well below 3, where the
+    infinitely short-range (JKR-like) adhesion of the edge energy balance does not hold. The
+    warning names the user's line, not the library's."""
+    with pytest.warns(ModelValidityWarning) as record:
+        scene = Scene.from_dict(LOW_TABOR)
+    assert len(record) == 1
+    tabor = dimensionless_groups(scene)["tabor"]
+    expected = tabor_parameter(radius=1 / ((2 * math.pi / 1e-4) ** 2 * 1e-6),
+                               work_of_adhesion=0.01, reduced_modulus=2e11 / 0.75)
+    assert tabor == pytest.approx(expected, rel=1e-12) and tabor < 3
+    message = str(record[0].message)
+    assert f"μ_T = {tabor:.3g} < 3" in message and "JKR" in message
+    assert record[0].filename == __file__
+    with pytest.warns(ModelValidityWarning) as record:       # every way a scene is built
+        Scene.from_toml(scene.to_toml())
+        attrs.evolve(scene, zeta=0.0)
+    assert len(record) == 2 and {r.filename for r in record} == {__file__}
+
+
+@pytest.mark.parametrize("data", [
+    pytest.param(lambda: rough_dict(THESIS), id="thesis case, μ_T = 383"),
+    pytest.param(lambda: scene_dict(), id="adhesive, dimensionless only"),
+    pytest.param(lambda: {**LOW_TABOR, "adhesion": {"kind": "none"},
+                          "physical": {k: v for k, v in LOW_TABOR["physical"].items()
+                                       if k != "work_of_adhesion"}},
+                 id="the stiff case without adhesion"),
+])
+def test_no_tabor_warning_where_it_does_not_apply(data):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        Scene.from_dict(data())
 
 
 def test_physical_conversions():

@@ -3,7 +3,6 @@ import pytest
 
 from viscocontact.errors import ValidationError
 from viscocontact.studies import Sweep, run
-from viscocontact._blas import _openblas_controls
 from viscocontact.studies.parallel import (ProcessBackend, SerialBackend,
                                            backend, single_blas_thread)
 
@@ -17,10 +16,16 @@ def test_workers_give_the_serial_result(tmp_path, adhesionless, mesh, identical)
 
 
 def test_single_blas_thread_restores_the_thread_counts():
-    before = [get() for get, _ in _openblas_controls()]
+    """(Nesting and threads: tests/unit/core/test_blas.py.)"""
+    from threadpoolctl import threadpool_info
+
+    def counts():
+        return [lib["num_threads"] for lib in threadpool_info() if lib["user_api"] == "blas"]
+
+    before = counts()
     with single_blas_thread():
-        assert all(get() == 1 for get, _ in _openblas_controls())
-    assert [get() for get, _ in _openblas_controls()] == before
+        assert all(n == 1 for n in counts())
+    assert counts() == before
 
 
 def test_backend_choice():

@@ -115,7 +115,7 @@ def test_time_limit_stores_the_point_as_an_error_and_the_chain_goes_on(tmp_path,
     data = run(sweep, tmp_path / "s.h5", progress=None, time_limit=1e-3)
     p = data.points
     assert len(p["status"]) == 2
-    assert all(m == "PointTimeout: time limit of 0.001 s reached" for m in p["message"])
+    assert all(m == "TimeLimitExceeded: time limit of 0.001 s reached" for m in p["message"])
     assert not p["converged"].any()
     ok = run(Sweep(scene=adhesionless, zetas=[1.0], discretization=mesh), tmp_path / "t.h5",
              progress=None, time_limit=600.0)

@@ -16,6 +16,7 @@ from ...contact.edges import EdgeContext
 from ...contact.fields import solve_fields
 from ...contact.mesh import build_mesh, zone_patterns
 from ...contact.topology import TopologyChange, repair
+from ...deadline import check as check_deadline
 from .sets import MIN_GAP, MIN_WIDTH
 
 #: A Jacobian request after the residual fell by less than this factor since the previous one
@@ -69,7 +70,9 @@ class EdgeSystem:
         self._last_size = None      # max |r| where the previous Jacobian was taken
 
     def evaluate(self, x):
-        """``(fields, ctx, r)`` at ``x`` (the last evaluation is cached)."""
+        """``(fields, ctx, r)`` at ``x`` (the last evaluation is cached). Every evaluation
+        checks the cooperative deadline (:mod:`viscocontact.deadline`)."""
+        check_deadline()
         key = x.tobytes()
         if key in self.cache:
             return self.cache[key]

@@ -1,0 +1,76 @@
+"""Plotting is library code: it writes its figures without touching the caller's matplotlib
+state (backend, pyplot's open figures)."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+PNG = b"\x89PNG\r\n\x1a\n"
+
+SCENE = """
+[profile]
+kind = "sinusoid"
+amplitude = 0.1
+[rheology]
+kind = "standard-linear-solid"
+beta = 10.0
+[solver]
+kind = "newton"
+[load]
+mean_pressure = 0.1
+[sliding]
+zeta = 1.0
+"""
+
+CALLER = r"""
+import sys
+import matplotlib
+matplotlib.use("svg")                         # the caller's choice, not Agg
+import numpy as np
+from viscocontact.plots import plot_solution_fields
+
+x = np.linspace(-np.pi, np.pi, 65)
+fields = {"x": x, "pressure": np.maximum(np.cos(x), 0.0), "gap": np.maximum(-np.cos(x), 0.0)}
+out = sys.argv[1]
+plot_solution_fields([{"fields": fields, "label": "a"}], out + "/first.png")
+assert "matplotlib.pyplot" not in sys.modules, "pyplot imported by the library"
+assert matplotlib.get_backend() == "svg", matplotlib.get_backend()
+
+import matplotlib.pyplot as plt               # a caller with a figure of its own open
+mine = plt.figure()
+plot_solution_fields([{"fields": fields, "label": "a"}], out + "/second.png")
+assert matplotlib.get_backend() == "svg", matplotlib.get_backend()
+assert plt.get_fignums() == [mine.number] and plt.gcf() is mine
+print("ok")
+"""
+
+
+def test_drawing_keeps_the_callers_backend_and_figures(tmp_path):
+    done = subprocess.run([sys.executable, "-c", CALLER, str(tmp_path)], capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "ok"
+    for name in ("first.png", "second.png"):
+        assert (tmp_path / name).read_bytes()[:8] == PNG
+
+
+def test_plot_study_writes_pngs_and_leaves_pyplot_alone(tmp_path):
+    import matplotlib
+
+    from viscocontact.plots import plot_study
+    from viscocontact.scene import Scene
+    from viscocontact.studies import Sweep, run
+
+    data = run(Sweep(scene=Scene.from_toml(SCENE), zetas=[0.1, 1.0],
+                     discretization={"elements": 32}), tmp_path / "s.h5", progress=None)
+    backend = matplotlib.get_backend()
+    pyplot = sys.modules.get("matplotlib.pyplot")
+    open_figures = pyplot.get_fignums() if pyplot is not None else []
+    files = plot_study(data, tmp_path / "png")
+    assert [f.name for f in files] == ["s_area.png", "s_friction.png"]
+    for f in files:
+        assert Path(f).read_bytes()[:8] == PNG
+    assert matplotlib.get_backend() == backend
+    if pyplot is not None:
+        assert pyplot.get_fignums() == open_figures
