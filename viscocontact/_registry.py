@@ -1,6 +1,6 @@
 """Entry-point registry of components.
 
-One small generic class serves the five component kinds. Listing names imports nothing; looking a
+One small generic class serves the six component kinds. Listing names imports nothing; looking a
 name up loads the entry point, checks that it is a subclass of the kind's base class, and caches it.
 An unknown name lists the registered ones with a "did you mean"; a broken plugin fails only when it
 is asked for, chained to its original ImportError. When two distributions register one name for
@@ -22,6 +22,7 @@ GROUPS = {
     "kernels": "viscocontact.kernels",
     "solvers": "viscocontact.solvers",
     "adhesion": "viscocontact.adhesion",
+    "methods": "viscocontact.methods",
 }
 
 
@@ -132,6 +133,7 @@ def _base(kind: str) -> Callable[[], type]:
             "kernels": ("viscocontact.kernels.base", "GreenKernel"),
             "solvers": ("viscocontact.solvers.base", "NonlinearSolver"),
             "adhesion": ("viscocontact.adhesion.base", "AdhesionModel"),
+            "methods": ("viscocontact.methods.base", "SolutionMethod"),
         }[kind]
         return getattr(importlib.import_module(module), attr)
 
@@ -143,6 +145,7 @@ rheologies = Registry(GROUPS["rheologies"], _base("rheologies"))
 kernels = Registry(GROUPS["kernels"], _base("kernels"))
 solvers = Registry(GROUPS["solvers"], _base("solvers"))
 adhesion = Registry(GROUPS["adhesion"], _base("adhesion"))
+methods = Registry(GROUPS["methods"], _base("methods"))
 
 REGISTRIES = {"profiles": profiles, "rheologies": rheologies, "kernels": kernels,
-              "solvers": solvers, "adhesion": adhesion}
+              "solvers": solvers, "adhesion": adhesion, "methods": methods}

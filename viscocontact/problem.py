@@ -100,7 +100,7 @@ class ContactProblem:
         """The problem a :class:`~viscocontact.scene.Scene` describes."""
         scene = scene.resolve()
         return cls(profile=scene.profile, rheology=scene.rheology, kernel=scene.kernel,
-                   adhesion=scene.adhesion, solver=scene.solver,
+                   adhesion=scene.adhesion, solver=scene.solver, method=scene.method,
                    mean_pressure=scene.load.mean_pressure, penetration=scene.load.penetration,
                    zeta=scene.zeta, **options)
 

@@ -52,7 +52,8 @@ class ContactResult:
     fields : dict or None
         ``x``, ``pressure``, ``displacement``, ``gap`` arrays (on request).
     extras : dict
-        Solver diagnostics: ``events`` (topology changes, refinements), ``residual_history``,
+        Solver diagnostics: ``method`` and ``error_estimate`` (see the properties of the same
+        names), ``events`` (topology changes, refinements), ``residual_history``,
         ``seconds`` and, for a solve that ends with contacts, ``conformity`` (the largest
         departure of the discrete solid from the profile inside the contacts, between
         collocation points, in units of the profile amplitude: a discretisation error).
@@ -79,6 +80,18 @@ class ContactResult:
     fields: Any = None
     extras: dict = attrs.field(factory=dict)
 
+    @property
+    def method(self) -> str:
+        """The registered name of the :class:`~viscocontact.methods.base.SolutionMethod` that
+        computed this result (``extras["method"]``; ``""`` when unknown)."""
+        return str(self.extras.get("method", ""))
+
+    @property
+    def error_estimate(self) -> float:
+        """The method's estimate of the relative discretisation error of Ã and μ
+        (``extras["error_estimate"]``; NaN when the method gives none)."""
+        return float(self.extras.get("error_estimate", float("nan")))
+
     def to_dict(self, *, with_fields: bool = False) -> dict:
         """The result as plain Python data (the keys of ``viscocontact solve --json``).
 
@@ -96,6 +109,7 @@ class ContactResult:
             "iterations": self.iterations, "function_evaluations": self.function_evaluations,
             "zeta": self.zeta, "edge_perturbation": self.edge_perturbation,
             "min_gap": self.min_gap,
+            "method": self.method, "error_estimate": self.error_estimate,
         }
         out = {k: v.item() if isinstance(v, np.generic) else v for k, v in out.items()}
         if self.edge_terms is not None:

@@ -1,7 +1,8 @@
 """The scene: one steady-sliding contact problem, its file format and its unit conversion.
 
 A scene file (TOML) holds one table per component — ``[profile]``, ``[rheology]``, ``[kernel]``,
-``[adhesion]``, ``[solver]`` — each naming a registered ``kind`` and its parameters, plus ``[load]``
+``[adhesion]``, ``[solver]``, ``[method]`` — each naming a registered ``kind`` and its parameters,
+plus ``[load]``
 (``mean_pressure`` p̃∞ *or* ``penetration`` Δ̃), ``[sliding]`` (``zeta`` ζ = q0·V·τ) and an optional
 top-level ``poisson``. Every value is one of the dimensionless groups of the thesis's eq. 4.17.
 
@@ -39,11 +40,12 @@ from .errors import PluginError, ValidationError
 
 #: Scene sections and the registry that builds each component section.
 COMPONENT_SECTIONS = {"profile": "profiles", "rheology": "rheologies", "kernel": "kernels",
-                      "adhesion": "adhesion", "solver": "solvers"}
+                      "adhesion": "adhesion", "solver": "solvers", "method": "methods"}
 SECTIONS = (*COMPONENT_SECTIONS, "load", "sliding", "physical")
 TOP_LEVEL_KEYS = ("poisson",)
 DEFAULT_KERNEL = "half-plane"
 DEFAULT_SOLVER = {True: "broyden", False: "bisection"}  # keyed by "is adhesive"
+DEFAULT_METHOD = "auto"
 DEFAULT_EQUILIBRIUM_DISTANCE = 1e-9  # m, Z0 of the Tabor parameter
 
 #: ``[physical]`` keys: SI unit, allowed range (lo, hi, lo_open) and meaning.
@@ -299,7 +301,7 @@ class Load:
 
 def _is_instance_of_base(kind: str):
     def check(inst, attribute, value):
-        if isinstance(value, ComponentSpec) and attribute.name in ("adhesion", "solver"):
+        if isinstance(value, ComponentSpec) and attribute.name in ("adhesion", "solver", "method"):
             return
         base = _registry._base(kind)()
         if not isinstance(value, base):
@@ -319,6 +321,10 @@ def _default_adhesion():
 def _default_solver(scene: "Scene"):
     adhesive = kind_of("adhesion", scene.adhesion) != "none"
     return build_component("solver", {"kind": DEFAULT_SOLVER[adhesive]}, lazy=True)
+
+
+def _default_method():
+    return build_component("method", {"kind": DEFAULT_METHOD}, lazy=True)
 
 
 def _default_poisson(scene: "Scene"):
@@ -360,6 +366,9 @@ class Scene:
         Default ``"none"``.
     solver : NonlinearSolver or ComponentSpec, optional
         Default ``"broyden"`` with adhesion, ``"bisection"`` without.
+    method : SolutionMethod or ComponentSpec, optional
+        How the equilibrium is computed: ``"auto"`` (default: the spectral method for an
+        adhesionless scene, the BEM for an adhesive one), ``"spectral"``, ``"bem"`` or a plugin.
     load : Load
         ``mean_pressure`` p̃∞ or ``penetration`` Δ̃.
     zeta : float
@@ -399,6 +408,7 @@ class Scene:
                                 validator=_is_instance_of_base("adhesion"))
     solver: Any = attrs.field(default=attrs.Factory(_default_solver, takes_self=True),
                               validator=_is_instance_of_base("solvers"))
+    method: Any = attrs.field(factory=_default_method, validator=_is_instance_of_base("methods"))
     load: Load = attrs.field(validator=attrs.validators.instance_of(Load))
     zeta: float = attrs.field(converter=_as_float, validator=_check_zeta)
     poisson: float = attrs.field(default=attrs.Factory(_default_poisson, takes_self=True),
@@ -423,7 +433,6 @@ class Scene:
         if not self.adhesive or not {"E0", "wavelength"} <= set(self.physical):
             return
         from .errors import ModelValidityWarning, warn_user
-        from .groups import dimensionless_groups
 
         for message in dimensionless_groups(self)["warnings"]:
             warn_user(f"{message} (viscocontact describe shows μ_T and its inputs)",
@@ -499,7 +508,7 @@ class Scene:
 
     def resolve(self) -> "Scene":
         """This scene with every :class:`ComponentSpec` built into its component object."""
-        changes = {s: getattr(self, s).resolve(s) for s in ("adhesion", "solver")
+        changes = {s: getattr(self, s).resolve(s) for s in ("adhesion", "solver", "method")
                    if isinstance(getattr(self, s), ComponentSpec)}
         return attrs.evolve(self, **changes) if changes else self
 
@@ -664,6 +673,7 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
     if tables["solver"] is None:
         tables["solver"] = {"kind": DEFAULT_SOLVER[kind_of("adhesion", adhesion) != "none"]}
     solver = build_component("solver", tables["solver"], lazy=True)
+    method = build_component("method", tables["method"] or {"kind": DEFAULT_METHOD}, lazy=True)
 
     load_table = _section(data, "load") or {}
     for key in load_table:
@@ -691,4 +701,109 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
         sliding["zeta"] = 0.0
 
     return Scene(profile=profile, rheology=rheology, kernel=kernel, adhesion=adhesion,
-                 solver=solver, load=load, zeta=sliding["zeta"], poisson=nu, physical=physical)
+                 solver=solver, method=method, load=load, zeta=sliding["zeta"], poisson=nu,
+                 physical=physical)
+
+
+# ---------------------------------------------------------------------------------------------
+# the dimensionless groups of a scene (``viscocontact describe``; see viscocontact.groups)
+TABOR_SHORT_RANGE = 3.0  # Greenwood: JKR (infinitely short-range adhesion) is accurate for μ_T >> 3
+
+
+def tabor_parameter(*, radius: float, work_of_adhesion: float, reduced_modulus: float,
+                    equilibrium_distance: float = DEFAULT_EQUILIBRIUM_DISTANCE) -> float:
+    """``μ_T = (R Δγ² / (E*² Z0³))^(1/3)`` (eq. 1.48, second form).
+
+    Parameters
+    ----------
+    radius : float
+        Crest radius of curvature R (m).
+    work_of_adhesion : float
+        Δγ (J/m²).
+    reduced_modulus : float
+        E* = E/(1-ν²) (Pa).
+    equilibrium_distance : float
+        Z0 (m).
+
+    Examples
+    --------
+    >>> round(tabor_parameter(radius=0.1, work_of_adhesion=0.01, reduced_modulus=1e7 / 0.75), 1)
+    383.2
+    """
+    length = work_of_adhesion / reduced_modulus
+    return length ** (2.0 / 3.0) * radius ** (1.0 / 3.0) / equilibrium_distance
+
+
+def _tabor(scene: "Scene", groups: dict[str, Any]) -> tuple[dict[str, Any], list[str]]:
+    phys = scene.physical or {}
+    out: dict[str, Any] = {"tabor": None, "tabor_glassy": None, "tabor_radius": None,
+                           "adhesion_length": None, "equilibrium_distance": None}
+    if not scene.adhesive or groups["gamma"] == 0.0:
+        out["tabor_note"] = "no adhesion: the Tabor parameter does not apply"
+        return out, []
+    missing = [k for k in ("E0", "wavelength") if k not in phys]
+    if missing:
+        out["tabor_note"] = ("the Tabor parameter needs a physical scale: give "
+                             + ", ".join(f"physical.{k}" for k in missing)
+                             + " (and physical.equilibrium_distance Z0, default 1 nm)")
+        return out, []
+    nu2 = 1.0 - scene.poisson**2
+    q0 = 2.0 * math.pi / phys["wavelength"]
+    e0 = phys["E0"]
+    dgamma = phys.get("work_of_adhesion", groups["gamma"] * math.pi * e0 / (nu2 * q0))
+    z0 = phys.get("equilibrium_distance", DEFAULT_EQUILIBRIUM_DISTANCE)
+    if kind_of("profile", scene.profile) == "sinusoid":
+        radius = 1.0 / (q0 * groups["amplitude"])  # 1/(q0² Λ)
+        which = "crest radius 1/(q0² Λ) of the sinusoid"
+    else:
+        radius = 1.0 / (q0 * groups["rms"])  # 1/(q0² r_rms), eq. 4.55
+        which = "R = λ0²/(4π² r_rms) of the equivalent sinusoid (eq. 4.55)"
+    estar = e0 / nu2
+    out.update(
+        tabor=tabor_parameter(radius=radius, work_of_adhesion=dgamma, reduced_modulus=estar,
+                              equilibrium_distance=z0),
+        tabor_glassy=tabor_parameter(radius=radius, work_of_adhesion=dgamma,
+                                     reduced_modulus=estar * groups["beta"],
+                                     equilibrium_distance=z0),
+        tabor_radius=radius, adhesion_length=dgamma / estar, equilibrium_distance=z0,
+        tabor_note=(f"μ_T = (R Δγ²/(E*² Z0³))^(1/3), E* = E0/(1-ν²) (glassy: E∞/(1-ν²)), {which}"))
+    warnings = []
+    if out["tabor"] < TABOR_SHORT_RANGE:
+        warnings.append(f"Tabor parameter μ_T = {out['tabor']:.3g} < 3: infinitely short-range "
+                        "(JKR-type) adhesion is doubtful")
+    elif out["tabor_glassy"] < TABOR_SHORT_RANGE:
+        warnings.append(f"glassy Tabor parameter μ_T,∞ = {out['tabor_glassy']:.3g} < 3: "
+                        "short-range adhesion is doubtful at high ζ")
+    return out, warnings
+
+
+def dimensionless_groups(scene: "Scene") -> dict[str, Any]:
+    """The dimensionless groups of ``scene`` (JSON-ready).
+
+    Keys: the component kinds (``profile``, ``rheology``, ``kernel``, ``adhesion``, ``solver``);
+    ``gamma`` γ̃, ``Gamma`` γ̃/Λ̃², ``amplitude`` Λ̃ = q0·max r, ``rms`` q0·r_rms, ``m2`` <r'²>,
+    ``zeta`` ζ, ``beta`` E∞/E0, ``poisson``, ``mean_pressure`` or ``penetration``; ``hurst``,
+    ``scales``, ``thickness`` when the components have them; ``tabor``, ``tabor_glassy``
+    (``None`` without a physical scale or without adhesion), ``tabor_radius`` (m),
+    ``adhesion_length`` (m), ``equilibrium_distance`` (m), ``tabor_note``; ``physical`` (the
+    echoed SI table or ``None``) and ``warnings`` (list of strings, e.g. μ_T < 3).
+    """
+    stats = scene.profile.statistics()
+    amplitude = float(scene.profile.amplitude)
+    gamma = float(_param(scene.adhesion, "gamma") or 0.0) if scene.adhesive else 0.0
+    groups: dict[str, Any] = {s: kind_of(s, getattr(scene, s))
+                              for s in ("profile", "rheology", "kernel", "adhesion", "solver")}
+    groups.update(gamma=gamma, Gamma=gamma / amplitude**2, amplitude=amplitude,
+                  rms=float(stats.rms), m2=float(stats.m2), zeta=scene.zeta,
+                  beta=float(scene.rheology.modulus_ratio), poisson=scene.poisson)
+    groups[scene.load.controlled] = scene.load.value
+    for name in ("hurst", "scales", "rolloff", "seed"):
+        if getattr(scene.profile, name, None) is not None:
+            groups[name] = _plain(getattr(scene.profile, name))
+    if getattr(scene.kernel, "thickness", None) is not None:
+        groups["thickness"] = float(scene.kernel.thickness)
+    tabor, warnings = _tabor(scene, groups)
+    groups.update(tabor)
+    groups["physical"] = dict(scene.physical) if scene.physical is not None else None
+    groups["warnings"] = warnings
+    return groups

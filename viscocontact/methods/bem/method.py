@@ -41,6 +41,11 @@ class BEM(SolutionMethod):
 
     name: ClassVar[str] = "bem"
 
+    def plan_steps(self, problem, prepared) -> tuple:
+        from .planning import bem_steps
+
+        return bem_steps(problem, prepared)
+
     def solve(self, problem, initial=None, *, fields: bool = False, prepared=None):
         prep = prepared if prepared is not None else problem.prepare()
         return Solve(problem, prep).run(initial, fields)

@@ -1,0 +1,80 @@
+"""The planned method: the spectral method for adhesionless scenes, the BEM for adhesive ones.
+
+An adhesionless equilibrium is unique and does not depend on the loading path, so it needs no
+approach path and no edge energy balance: a uniform-grid spectral solve finds it directly, to a
+stated tolerance. An adhesive scene needs the energy balance at every edge, which only the BEM
+has. When the spectral method cannot reach the requested tolerance on the largest grid it
+allows, the BEM finishes the job seeded with the grid's contact set.
+"""
+from __future__ import annotations
+
+from typing import ClassVar
+
+import attrs
+
+from .._validation import in_range
+from .base import SolutionMethod
+
+
+@attrs.frozen(kw_only=True)
+class Auto(SolutionMethod):
+    """Chooses the method from the scene (see the module docstring).
+
+    Parameters
+    ----------
+    tolerance : float
+        Relative accuracy of Ã and μ asked of the spectral method.
+    finish_with_bem : bool
+        When the spectral estimate stays above ``tolerance``, solve again with the BEM from the
+        grid's contact set (the result then comes from the BEM and says so in its events).
+    """
+
+    name: ClassVar[str] = "auto"
+
+    tolerance: float = attrs.field(default=1e-3, validator=in_range(1e-8, 0.1))
+    finish_with_bem: bool = attrs.field(default=True,
+                                        validator=attrs.validators.instance_of(bool))
+
+    def choose(self, problem) -> tuple[SolutionMethod, str]:
+        """The method a solve of ``problem`` takes, and why."""
+        from .bem import BEM
+
+        try:
+            spectral = self.spectral()
+        except ImportError as exc:           # a partial install
+            return BEM(), f"the spectral method cannot be imported ({exc})"
+        reason = spectral.unsupported(problem)
+        if reason is None:
+            return spectral, ("adhesionless scene: the equilibrium does not depend on the path; "
+                              f"a uniform grid reaches the tolerance {self.tolerance:g}")
+        return BEM(), reason
+
+    def spectral(self) -> SolutionMethod:
+        from .spectral import Spectral
+
+        return Spectral(tolerance=self.tolerance)
+
+    def solve(self, problem, initial=None, *, fields: bool = False, prepared=None):
+        from .bem import BEM
+
+        method, reason = self.choose(problem)
+        result = method.solve(problem, initial, fields=fields, prepared=prepared)
+        events = result.extras.setdefault("events", [])
+        events.insert(0, f"method {method.name}: {reason}")
+        if (method.name != BEM.name and self.finish_with_bem and result.converged
+                and not result.extras.get("tolerance_met", True)):
+            estimate = result.extras.get("error_estimate")
+            start = result if result.n_contacts or result.full_contact else initial
+            finished = BEM().solve(problem, start, fields=fields, prepared=prepared)
+            finished.extras.setdefault("events", []).insert(
+                0, f"method bem from the {method.name} contact set: the grid's error estimate "
+                   f"{estimate:.2g} stayed above the tolerance {self.tolerance:g}")
+            return finished
+        return result
+
+    def plan_steps(self, problem, prepared) -> tuple:
+        from ..plan import PlanStep
+
+        method, reason = self.choose(problem)
+        return (PlanStep(stage="method", choice=method.name, reason=reason),
+                *method.plan_steps(problem, prepared))
