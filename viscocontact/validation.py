@@ -307,7 +307,7 @@ def _submit_all(plan: Plan, pool) -> dict:
 # Numbers
 # ---------------------------------------------------------------------------------------------
 def fmt(x, digits=2, sign=False) -> str:
-    """``5.4e-3`` style (no zero-padded exponent); plain for 1e-2 <= |x| < 1e4."""
+    """``5.4e-3`` style (no zero-padded exponent); plain for ``1e-2 <= |x| < 1e4``."""
     if x is None or not np.isfinite(x):
         return "—"
     x = float(x)
