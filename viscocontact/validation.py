@@ -735,7 +735,7 @@ def _md_friction(fr, plan) -> list[str]:
          f"**Sinusoid** `Sinusoid(amplitude={SINUSOID_AMPLITUDE})`, "
          f"{len(plan.friction_zetas)} speeds ζ from {fmt(min(plan.friction_zetas))} to "
          f"{fmt(max(plan.friction_zetas))}.", ""]
-    rows = []
+    rows: list[tuple] = []
     for w in fr["wavy"]:
         (zb, vb), (zp, vp) = w["bem_peak"], w["persson_peak"]
         rows.append((fmt(w["p"]), fmt(zb, 3), fmt(vb, 3), fmt(zp, 3), fmt(vp, 3),
@@ -1119,6 +1119,7 @@ def _write_text(path: Path, text: str) -> None:
 
 def _solve_all(plan: Plan, workers: int, log) -> dict:
     """Run every task; ``{key: row or list of rows}``."""
+    pool: _Serial | ProcessPoolExecutor
     if workers <= 1:
         pool = _Serial()
     else:   # spawn: no fork of a process whose BLAS threads may be running
