@@ -1,4 +1,4 @@
-r"""The benchmark harness behind ``viscocontact bench`` (issue 5 §1).
+r"""The benchmark harness behind ``viscocontact bench``.
 
 A fixed list of scenes — the sinusoid ``Sinusoid(amplitude=0.1)`` and the thesis's rough profile
 ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=0)``, adhesionless and adhesive

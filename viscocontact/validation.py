@@ -1,4 +1,4 @@
-r"""The validation report: the BEM against closed forms and the classical theories (issue 6).
+r"""The validation report: the BEM against closed forms and the classical theories.
 
 ``viscocontact validate [--quick] [--out docs] [--workers N]`` solves every case,
 writes ``<out>/validation.md`` and ``<out>/figures/validation_*.png`` (each file atomically:
