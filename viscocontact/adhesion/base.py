@@ -9,6 +9,7 @@ Contract for implementers
    (``σ̃√(2π r̃)``), so that one tolerance means the same thing for every model.
 3. :meth:`edge_terms` reports, per edge, ``δŨ/δX̃`` and ``δL̃_P/δX̃`` (stored-energy sign; they add
    up to ``2πγ̃/Λ̃²`` at equilibrium, eq. 4.20) and the effective work of adhesion (eq. 4.56).
+
 Both receive an :class:`~viscocontact.contact.edges.EdgeContext`, which computes stress-intensity
 factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
 """

@@ -77,7 +77,7 @@ def cl2(x):
     Examples
     --------
     >>> round(float(cl2(np.pi / 3)), 12)
-    1.014941606410
+    1.01494160641
     """
     t = wrap(x)
     t2 = t * t

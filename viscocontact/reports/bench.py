@@ -1,4 +1,4 @@
-r"""The benchmark harness behind ``viscocontact bench`` (issue 5 §1).
+r"""The benchmark harness behind ``viscocontact bench``.
 
 A fixed list of scenes — the sinusoid ``Sinusoid(amplitude=0.1)`` and the thesis's rough profile
 ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=0)``, adhesionless and adhesive
@@ -35,6 +35,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import Any
 
 import attrs
 import numpy as np
@@ -129,7 +130,8 @@ def _solver(name: str):
 
 def _timed(fn, repeats: int, budget: float) -> dict:
     """Median wall time of ``fn()`` over ``repeats`` (stops repeating after a failure)."""
-    times, out = [], None
+    times: list[float] = []
+    out: Any = None
     for _ in range(repeats):
         started = time.perf_counter()
         try:
@@ -176,6 +178,8 @@ def load_peer(suite: Path):
         raise ValidationError("--suite", str(suite), f"a folder that contains {PEER_FILE} "
                               "(the benchmarks/ folder of the source tree)")
     spec = importlib.util.spec_from_file_location("viscocontact_bench_peer_fft", path)
+    if spec is None or spec.loader is None:
+        raise ImportError(f"cannot load {path} as a module")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
@@ -206,7 +210,7 @@ def reference(rows: list[dict], floors: dict | None = None) -> dict:
     """
     floors = floors or {}
     order = {name: i for i, name in enumerate(("newton", "bisection", "broyden", "ncg"))}
-    by_mesh = {}
+    by_mesh: dict[Any, dict] = {}
     for row in sorted(rows, key=lambda r: order.get(r["method"], 9)):
         if row["status"] == "converged" and not row["method"].startswith("fft"):
             by_mesh.setdefault(row["resolution"], row)

@@ -1,4 +1,4 @@
-r"""The validation report: the BEM against closed forms and the classical theories (issue 6).
+r"""The validation report: the BEM against closed forms and the classical theories.
 
 ``viscocontact validate [--quick] [--out docs] [--workers N]`` solves every case,
 writes ``<out>/validation.md`` and ``<out>/figures/validation_*.png`` (each file atomically:
@@ -307,7 +307,7 @@ def _submit_all(plan: Plan, pool) -> dict:
 # Numbers
 # ---------------------------------------------------------------------------------------------
 def fmt(x, digits=2, sign=False) -> str:
-    """``5.4e-3`` style (no zero-padded exponent); plain for 1e-2 <= |x| < 1e4."""
+    """``5.4e-3`` style (no zero-padded exponent); plain for ``1e-2 <= |x| < 1e4``."""
     if x is None or not np.isfinite(x):
         return "—"
     x = float(x)
@@ -735,7 +735,7 @@ def _md_friction(fr, plan) -> list[str]:
          f"**Sinusoid** `Sinusoid(amplitude={SINUSOID_AMPLITUDE})`, "
          f"{len(plan.friction_zetas)} speeds ζ from {fmt(min(plan.friction_zetas))} to "
          f"{fmt(max(plan.friction_zetas))}.", ""]
-    rows = []
+    rows: list[tuple] = []
     for w in fr["wavy"]:
         (zb, vb), (zp, vp) = w["bem_peak"], w["persson_peak"]
         rows.append((fmt(w["p"]), fmt(zb, 3), fmt(vb, 3), fmt(zp, 3), fmt(vp, 3),
@@ -1119,6 +1119,7 @@ def _write_text(path: Path, text: str) -> None:
 
 def _solve_all(plan: Plan, workers: int, log) -> dict:
     """Run every task; ``{key: row or list of rows}``."""
+    pool: _Serial | ProcessPoolExecutor
     if workers <= 1:
         pool = _Serial()
     else:   # spawn: no fork of a process whose BLAS threads may be running

@@ -42,7 +42,7 @@ class Newton(FiniteDifferenceOptions, NonlinearSolver):
       kept, so it stays a descent direction of the merit), before backtracking.
     * Cost per iteration: the Jacobian (0 evaluations if analytic, ``n`` forward, ``2n``
       central) plus one evaluation per trial step. Convergence is quadratic with an analytic or
-      central-difference Jacobian, and linear with ratio ~``rel_step·|x|·|J''|/|J|`` with forward
+      central-difference Jacobian, and linear with ratio ``~rel_step·|x|·|J''|/|J|`` with forward
       differences (indistinguishable from quadratic at the usual tolerances).
     * A singular Jacobian gives the least-squares (minimum-norm) step.
 
