@@ -57,3 +57,10 @@ def test_rheologies_conform(name):
 @pytest.mark.parametrize("name", _names("kernels"))
 def test_kernels_conform(name):
     check_kernel(_instance("kernels", name))
+
+
+@pytest.mark.parametrize("name", _registry.REGISTRIES["methods"].names())
+def test_methods_conform(name):
+    from viscocontact.testing.conformance_methods import check_method
+
+    check_method(_registry.REGISTRIES["methods"].get(name)())

@@ -130,13 +130,14 @@ def test_plugins_json(capsys):
     code, out, err = run(capsys, "plugins", "--json")
     assert code == 0
     table = strict(out)
-    assert set(table) == {"profiles", "rheologies", "kernels", "solvers", "adhesion"}
+    assert set(table) == {"profiles", "rheologies", "kernels", "solvers", "adhesion", "methods"}
     names = {group: {e["name"] for e in entries} for group, entries in table.items()}
     assert {"sinusoid", "self-affine", "measured"} <= names["profiles"]
     assert {"elastic", "standard-linear-solid", "prony"} <= names["rheologies"]
     assert {"half-plane", "confined-layer", "free-layer"} <= names["kernels"]
     assert {"newton", "broyden", "nonlinear-cg", "bisection"} <= names["solvers"]
     assert {"none", "energy-balance"} <= names["adhesion"]
+    assert {"auto", "bem", "spectral"} <= names["methods"]
     entry = next(e for e in table["rheologies"] if e["name"] == "elastic")
     assert entry == {"name": "elastic", "distribution": "viscocontact"}
 

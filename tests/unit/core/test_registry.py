@@ -160,7 +160,8 @@ def test_name_of_tolerates_spaces_in_value(plugin_module):
 
 
 def test_module_registries_hold_builtins():
-    assert set(_registry.REGISTRIES) == {"profiles", "rheologies", "kernels", "solvers", "adhesion"}
+    assert set(_registry.REGISTRIES) == {"profiles", "rheologies", "kernels", "solvers", "adhesion",
+                                         "methods"}
     assert {"sinusoid", "self-affine"} <= set(_registry.profiles.names())
     assert {"elastic", "standard-linear-solid", "prony"} <= set(_registry.rheologies.names())
     assert {"half-plane", "confined-layer", "free-layer"} <= set(_registry.kernels.names())
