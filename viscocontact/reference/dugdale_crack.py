@@ -177,7 +177,7 @@ def steady_crack(speed: float, beta: float, crack: str = "opening") -> CrackStat
     if not (math.isfinite(v) and v > 0):
         raise ValidationError("speed", speed, "a finite real number > 0")
     # κ·(a0/a) rises from 0 to ∞ with κ; a/a0 lies in [1/β, β] so κ in [1/(βv), β/v]
-    g = lambda lk: math.exp(lk) / zone_length(math.exp(lk), beta, crack) - 1.0 / v  # noqa: E731
+    g = lambda lk: math.exp(lk) / zone_length(math.exp(lk), beta, crack) - 1.0 / v
     lo, hi = math.log(1.0 / (beta * v)) - 1.0, math.log(beta / v) + 1.0
     kappa = math.exp(optimize.brentq(g, lo, hi, xtol=1e-14, rtol=1e-14))
     return CrackState(speed=v, kappa=kappa, toughness=toughness(kappa, beta, crack),

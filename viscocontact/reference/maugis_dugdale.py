@@ -317,8 +317,8 @@ class MaugisDugdaleWavy:
         eta = self.h0
         grid = np.linspace(0.0, _HALF_PI, 33)
         g = np.r_[0.0, self._zone_gaps(a, grid[1:])]
-        f = lambda t: self._gap_at(a, t, t) - eta   # noqa: E731
-        root = lambda lo, hi: optimize.brentq(f, lo, hi, xtol=1e-15, rtol=1e-15)  # noqa: E731
+        f = lambda t: self._gap_at(a, t, t) - eta
+        root = lambda lo, hi: optimize.brentq(f, lo, hi, xtol=1e-15, rtol=1e-15)
         above = np.flatnonzero(g > eta)
         if not above.size and self._sigma > 0:        # the maximum may fall between nodes
             i = int(np.argmax(g))
@@ -379,7 +379,7 @@ class MaugisDugdaleWavy:
                                        options={"xatol": 1e-10})
         a_off = float(res.x) if res.fun < p[i] else float(areas[i])
         lo, hi = areas[max(i_top - 1, 0)], areas[min(i_top + 1, areas.size - 1)]
-        top = lambda A: -min(self._partial_pressure(A), -p[i])   # noqa: E731 (off branch: low)
+        top = lambda A: -min(self._partial_pressure(A), -p[i])
         res = optimize.minimize_scalar(top, bounds=(lo, hi), method="bounded",
                                        options={"xatol": 1e-10})
         a_top = float(res.x) if -res.fun > p[i_top] else float(areas[i_top])
@@ -404,7 +404,7 @@ class MaugisDugdaleWavy:
         if self.h0 >= 2.0:
             return MDState(area=0.0, outer=2 * math.pi, mean_pressure=-self.cohesive_stress,
                            penetration=0.0, saturated=True)
-        trough = lambda a: (2 * (math.cos(a / 2) - math.sin(a / 2) ** 2   # noqa: E731
+        trough = lambda a: (2 * (math.cos(a / 2) - math.sin(a / 2) ** 2
                                  * math.log(1 / math.tan(a / 4))) - self.h0)
         return self._state(optimize.brentq(trough, 1e-300, math.pi, xtol=1e-15, rtol=1e-15),
                            _HALF_PI)

@@ -1,6 +1,7 @@
 """The Maugis–Dugdale wavy contact oracle against independent checks and its exact limits."""
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -9,14 +10,18 @@ from scipy import integrate
 
 from viscocontact.errors import ValidationError
 from viscocontact.groups import tabor_parameter
-from viscocontact.reference import (JohnsonWavy, MaugisDugdaleWavy, westergaard_penetration,
-                                    westergaard_pressure)
+from viscocontact.reference import (
+    JohnsonWavy,
+    MaugisDugdaleWavy,
+    westergaard_penetration,
+    westergaard_pressure,
+)
 
 
 def _quad(f, lo, hi, points=()):
     cuts = [lo] + sorted(p for p in points if lo < p < hi) + [hi]
     return sum(integrate.quad(f, u, v, epsabs=1e-13, epsrel=1e-12, limit=200)[0]
-               for u, v in zip(cuts[:-1], cuts[1:]))
+               for u, v in itertools.pairwise(cuts))
 
 
 def _displacement(md, st, x):
