@@ -3,11 +3,22 @@ r"""Apparent toughness of a steadily moving Dugdale crack in a standard linear s
 A semi-infinite plane crack moves at constant speed V through a standard linear solid (thesis
 eqs. 4.4-4.5) with creep function ``E0·J(t) = c(t/τ) = 1 - (1 - 1/β) e^{-t/τ}``: τ is the creep
 (retardation) time of :class:`~viscocontact.rheology.StandardLinearSolid` and of ``ζ = q0Vτ``,
-``β = E∞/E0``. Ahead of the open faces a Dugdale zone of length ``a`` carries the uniform closing
-traction σ0; the faces separate when the opening reaches ``δc = Δγ/σ0``. Let ``κ = a/(Vτ)``: the
+``β = E∞/E0``. Behind the tip a Dugdale zone of length ``a`` on the crack faces carries the
+uniform closing traction σ0; the opening closes smoothly at the tip (no K left) and reaches
+``δc = Δγ/σ0`` at the zone's far end, where the faces separate. Let ``κ = a/(Vτ)``: the
 zone length over the distance travelled in one creep time (the time a material point spends in
 the zone is ``κτ``). ``G = K²/E0'`` is the energy release rate of the far field, measured with the
 *relaxed* modulus, so that ``G/Δγ`` is the apparent toughness (1 when slow).
+
+Why it is exact. In steady state the creep integral along a material path is a convolution in the
+crack-fixed coordinate and commutes with the elastic operator of the surface, so the opening is
+the elastic response (compliance ``1/E0``) to the *creep-integrated* traction, and equally the
+*relaxation-integrated* opening is the elastic response to the actual traction. Each integral
+depends only on what the material met upstream. Where material enters the open faces from the
+bonded region (opening crack), the relaxation-integrated opening vanishes in the bonded region,
+so the stresses are the elastic ones. Where it enters from the open faces (closing crack), the
+creep-integrated traction is known on the faces, so the opening is that of an elastic crack
+under it.
 
 Opening crack (the bonded region recedes: material leaves it through the zone). The stresses are
 the elastic ones, ``K = σ0√(8a/π)``, and the opening is the creep integral of the elastic opening
@@ -21,8 +32,7 @@ along the material's path (Schapery 1975; Greenwood 2004). The elastic Dugdale o
              = \frac{2}{\kappa}\int_0^{\sqrt\kappa} F(y)\,dy ,
 
 with Dawson's function F. Closing crack (healing: material enters the bonded region through the
-zone). The roles swap (the Wiener–Hopf factor of the steady viscoelastic operator moves to the
-other side): the opening is that of an elastic crack of compliance ``1/E0`` loaded by the creep
+zone). The opening is that of an elastic crack of compliance ``1/E0`` loaded by the creep
 integral of the traction history, ``σ0 c((a - r)/(Vτ))`` at distance r behind the tip. With
 ``m(κ) = ∫_0^1 c(κ(1 - w²)) dw = 1 - (1 - β^{-1}) F(√κ)/√κ``, the far field is
 ``K = σ0√(8a/π)·m`` and the opening at the zone's entry ``(8σ0a/(πE0'))(2m - n)``, so

@@ -41,24 +41,31 @@ of ``ũ`` vanishes). The contact stress is
 ``σ̃ = -β cos(x̃/2)√(α² - S²)·[2 - (2σ/(π cos²(a/2))) arctan(√(1+k²) tan θ/k)/(k√(1+k²))]``,
 ``k² = (α² - S²)/cos²(a/2)``; it tends to σ̃0 at the contact edge (continuous stress).
 
-Closed forms: ``p̃∞``, the contact stress, and the adhesionless parts. Quadrature (tanh-sinh, ~200
-nodes, round-off accuracy): the gap and ``Δ̃``, whose cohesive parts are single integrals of
-elementary functions with an integrable log singularity at ``φ = θ``.
+Closed form: ``p̃∞(Ã, C̃)``, the contact stress, Westergaard's trough gap. Quadrature (tanh-sinh,
+205 nodes, absolute error ~1e-12): the gap and ``Δ̃``, whose cohesive parts are single integrals
+of elementary functions with an integrable log singularity at ``φ = θ``. An equilibrium is a root
+of ``g̃(c) = η`` in θ (Brent).
 
-Limits. ``Γ̃ → 0``: Westergaard (:mod:`~viscocontact.reference.westergaard`), the zone becoming
-where Westergaard's gap is below η. ``η → 0`` at fixed Γ̃: Johnson's JKR-type wavy contact
-(:class:`~viscocontact.reference.JohnsonWavy`), with errors ``O(η²)`` in ``p̃∞`` and ``Δ̃`` at fixed
-Ã. Saturated zone ``c = π`` (exact whenever Westergaard's gap at the trough ``x̃ = π`` is ``≤ η``):
-a uniform tension deforms nothing, so ``p̃∞ = β sin²(a/2) - σ̃0`` and ``Δ̃`` is Westergaard's.
-``Γ̃ → 0`` at fixed η < 2 (rigid, Bradley-like): pull-off ``p̃∞ → -(σ̃0/π) arccos(1 - η)`` at
-``Ã → 0``; for η ≥ 2 the pull-off is ``-σ̃0`` exactly.
+Limits. ``Γ̃ → 0``: Westergaard (:mod:`~viscocontact.reference.westergaard`), error ``O(Γ̃)``, the
+zone becoming where Westergaard's gap is below η. ``η → 0`` at fixed Γ̃: Johnson's JKR-type wavy
+contact (:class:`~viscocontact.reference.JohnsonWavy`), errors ``O(η²)`` in ``p̃∞`` and ``Δ̃`` at
+fixed Ã; the zone width tends to Dugdale's ``d = πK²/(8σ0²) = βη²/(4Γ̃)`` (Irwin's
+``G = K²/(2E)`` on a rigid-elastic interface), and the error is an edge shift: Johnson's state at
+``Ã + 4d/3`` is reached to ``O(η⁴)`` (the Dugdale field ahead, ``(2σ0/π) arctan√(d/x)``, is a
+K-field centred ``2d/3`` inside the zone), so that the pull-off converges as ``O(η⁴)``.
+Saturated zone ``c = π`` (an equilibrium whenever Westergaard's gap at the trough ``x̃ = π`` is
+``≤ η``): a uniform tension deforms nothing, so ``p̃∞ = β sin²(a/2) - σ̃0`` and ``Δ̃`` and the
+contact stress are Westergaard's, the latter plus σ̃0. ``Γ̃ → 0`` at fixed η < 2 (rigid,
+Bradley-like): the pull-off tends to ``-(σ̃0/π) arccos(1 - η)`` at ``Ã → 0``, error ``O(Γ̃)``.
 
 Multiple equilibria. ``g̃(c)`` rises with ``c`` and falls again near ``c = π``, where the two zones
 of a period merge and the cohesive deformation vanishes. When Westergaard's trough gap is ``≤ η``
 below the maximum of ``g̃(c)``, an area has up to three equilibria (smallest zone, a larger zone,
 saturated): :meth:`MaugisDugdaleWavy.states` lists them; :meth:`~MaugisDugdaleWavy.state` returns
-the smallest zone, the branch continuous with Johnson's JKR-type branch. Separated states (no
-contact, ``Ã = 0``) are not modelled.
+the smallest zone, the branch continuous with Johnson's JKR-type branch. Pull-off
+(:meth:`~MaugisDugdaleWavy.pull_off`) is the minimum of ``p̃∞`` on that partial-contact branch
+below its closure maximum, or, unloading from full contact, the end of the saturated branch.
+Separated states (no contact, ``Ã = 0``) are not modelled.
 
 Transition parameters. Johnson's ``α_J = 2√Γ̃`` (``p̃∞ = sin²(a/2) - α_J √tan(a/2)`` in the JKR
 limit). The Maugis-type ``λ = 2σ0 (R/(πE²Δγ))^{1/3}`` with the crest radius ``R = 1/(q0²Λ)`` and
@@ -140,7 +147,7 @@ class MDState:
 def _theta_of(a: float, c: float) -> float:
     """``θ = arccos(cos(c/2)/cos(a/2))`` without the cancellation of arccos near 1."""
     one_minus = 2 * math.sin((c + a) / 4) * math.sin((c - a) / 4) / math.cos(a / 2)
-    return 2 * math.asin(math.sqrt(min(max(0.5 * one_minus, 0.0), 1.0)))
+    return min(2 * math.asin(math.sqrt(min(max(0.5 * one_minus, 0.0), 1.0))), _HALF_PI)
 
 
 @attrs.frozen(kw_only=True)
@@ -394,7 +401,8 @@ class MaugisDugdaleWavy:
         saturated minimum. ``"full"``: unloading from full contact, the gap opens at the trough
         onto the saturated branch ``p̃∞ = β sin²(a/2) - σ̃0``, stable down to the area where
         Westergaard's trough gap ``2[cos(a/2) - sin²(a/2) log cot(a/4)]`` equals η (``Ã → 0``
-        and ``p̃∞ = -σ̃0`` for η ≥ 2).
+        and ``p̃∞ = -σ̃0`` for η ≥ 2); there the contact jumps, onto the partial branch if that
+        holds the load, else off.
         """
         if branch not in ("partial", "full"):
             raise ValidationError("branch", branch, "one of ['partial', 'full']")

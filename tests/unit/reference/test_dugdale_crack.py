@@ -74,7 +74,7 @@ def test_opening_crack_by_direct_quadrature(kappa, beta):
     creep = _q(lambda s: elastic(s) * (1 - 1 / beta) * math.exp(-(a - s) / vt) / vt, 0, a,
                rel=1e-10)               # the inner quadrature is exact to ~1e-13
     tip = elastic(a) / beta + creep
-    assert toughness(kappa, beta, "opening") == pytest.approx(k**2 / (sigma0 * tip), rel=1e-9)
+    assert toughness(kappa, beta, "opening") == pytest.approx(k**2 / (sigma0 * tip), rel=1e-11)
 
 
 @pytest.mark.parametrize("beta", [3.0, 100.0])
@@ -88,7 +88,7 @@ def test_closing_crack_by_direct_quadrature(kappa, beta):
     traction = lambda rho: sigma0 * _creep((a - rho) / vt, beta)
     k = _k(traction, a)
     entry = _opening(a, traction, k, a)
-    assert toughness(kappa, beta, "closing") == pytest.approx(k**2 / (sigma0 * entry), rel=1e-9)
+    assert toughness(kappa, beta, "closing") == pytest.approx(k**2 / (sigma0 * entry), rel=1e-11)
     assert zone_length(kappa, beta, "closing") == pytest.approx(
         toughness(kappa, beta, "closing") / (k / (sigma0 * math.sqrt(8 * a / math.pi))) ** 2,
         rel=1e-12)

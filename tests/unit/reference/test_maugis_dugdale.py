@@ -63,12 +63,12 @@ def test_field_equations_by_direct_quadrature(Gamma, eta, beta, area):
     a, c = st.area / 2, st.outer / 2
     for x in (0.0, 0.4 * a, 0.9 * a):
         assert _displacement(md, st, x) == pytest.approx(
-            math.cos(x) - 1 + st.penetration, abs=1e-10)
+            math.cos(x) - 1 + st.penetration, abs=1e-12)
     gap_c = _displacement(md, st, c) - (math.cos(c) - 1 + st.penetration)
-    assert gap_c == pytest.approx(eta, rel=1e-9)
+    assert gap_c == pytest.approx(eta, rel=1e-12)
     assert md.gap([c], st.area, st.outer)[0] == pytest.approx(eta, rel=1e-11)
     mean = _quad(lambda t: md.stress([t], st.area, st.outer)[0], -math.pi, math.pi, (-c, -a, a, c))
-    assert -mean / (2 * math.pi) == pytest.approx(st.mean_pressure, abs=1e-11)
+    assert -mean / (2 * math.pi) == pytest.approx(st.mean_pressure, abs=1e-13)
     edge = md.stress([a * (1 - 1e-10)], st.area, st.outer)[0]
     assert edge == pytest.approx(md.cohesive_stress, rel=1e-4)
 
@@ -168,6 +168,11 @@ def test_saturated_zone_is_westergaard_under_uniform_tension():
     assert sat[0].mean_pressure == pytest.approx(
         3.0 * float(westergaard_pressure(area)) - md.cohesive_stress, abs=1e-14)
     assert sat[0].penetration == pytest.approx(float(westergaard_penetration(area)), abs=1e-12)
+    x = np.linspace(-area / 2, area / 2, 41)[1:-1]
+    westergaard = -6.0 * np.cos(x / 2) * np.sqrt(np.sin(area / 4) ** 2 - np.sin(x / 2) ** 2)
+    assert md.stress(x, area, 2 * math.pi) == pytest.approx(westergaard + md.cohesive_stress,
+                                                            abs=1e-12)
+    assert md.mean_pressure(area, 2 * math.pi) == sat[0].mean_pressure
     full = md.pull_off("full")
     assert _westergaard_trough_gap(full.area) == pytest.approx(md.h0, rel=1e-9)
     assert full.mean_pressure == pytest.approx(
