@@ -130,6 +130,10 @@ class MDState:
         ``Δ̃`` from the mean plane of the deformed solid.
     saturated : bool
         ``C̃ = 2π``: the cohesive zones fill the whole gap region.
+    zone_angle : float
+        ``θ = arccos(cos(c/2)/cos(a/2))`` in ``[0, π/2]``, exact; ``C̃ - Ã`` loses digits when
+        the zones are narrow (θ ∝ √(c - a)), so pass ``zone_angle=`` rather than ``outer`` to
+        the field methods of :class:`MaugisDugdaleWavy` for such states.
     """
 
     area: float
@@ -137,6 +141,7 @@ class MDState:
     mean_pressure: float
     penetration: float
     saturated: bool
+    zone_angle: float
 
     @property
     def zone_width(self) -> float:
@@ -217,11 +222,21 @@ class MaugisDugdaleWavy:
     def _sigma(self) -> float:
         return self.cohesive_stress / self.modulus_ratio
 
-    def _check(self, area: float, outer: float | None = None) -> tuple[float, float | None]:
+    def _check(self, area, outer=None, zone_angle=None, required=True):
+        """``(a, θ)`` from ``Ã`` and either ``C̃`` or θ (θ None when neither is given)."""
         a = 0.5 * float(area)
         if not 0.0 < a < math.pi:
             raise ValidationError("area", area, "a number in (0, 2π)")
+        if zone_angle is not None:
+            if outer is not None:
+                raise ValidationError("outer", outer, "None when zone_angle is given")
+            th = float(zone_angle)
+            if not 0.0 <= th <= _HALF_PI:
+                raise ValidationError("zone_angle", zone_angle, "a number in [0, π/2]")
+            return a, th
         if outer is None:
+            if required:
+                raise ValidationError("outer", outer, "a number in [area, 2π] (or zone_angle)")
             return a, None
         c = 0.5 * float(outer)
         if not a <= c <= math.pi:
@@ -254,20 +269,24 @@ class MaugisDugdaleWavy:
         at_c = piece(0.0, th)
         return at_c - piece(phi_end, th) if phi_end <= th else at_c + piece(th, phi_end)
 
-    def mean_pressure(self, area: float, outer: float) -> float:
-        """``p̃∞ = β sin²(Ã/4) - (2σ̃0/π)θ`` for any contact ``Ã`` and outer length ``C̃``."""
-        a, th = self._check(area, outer)
+    def mean_pressure(self, area: float, outer: float | None = None, *,
+                      zone_angle: float | None = None) -> float:
+        """``p̃∞ = β sin²(Ã/4) - (2σ̃0/π)θ`` for any contact ``Ã`` and outer length ``C̃`` (or
+        zone angle θ), in equilibrium or not."""
+        a, th = self._check(area, outer, zone_angle)
         return self.modulus_ratio * math.sin(a / 2) ** 2 - 2 * self.cohesive_stress * th / math.pi
 
-    def zone_gap(self, area: float, outer: float) -> float:
+    def zone_gap(self, area: float, outer: float | None = None, *,
+                 zone_angle: float | None = None) -> float:
         """The gap ``g̃(c)`` at the end of the zone; equilibrium when it equals η (or, saturated,
         when ``C̃ = 2π`` and it is ``≤ η``)."""
-        a, th = self._check(area, outer)
+        a, th = self._check(area, outer, zone_angle)
         return self._gap_at(a, th, th)
 
-    def penetration(self, area: float, outer: float) -> float:
+    def penetration(self, area: float, outer: float | None = None, *,
+                    zone_angle: float | None = None) -> float:
         """``Δ̃ = 1 - (1/π)∫_a^π g̃ dx̃``."""
-        a, th = self._check(area, outer)
+        a, th = self._check(area, outer, zone_angle)
         return self._penetration(a, th)
 
     def _penetration(self, a, th):
@@ -281,13 +300,14 @@ class MaugisDugdaleWavy:
                 total += (hi - lo) * float(np.sum(_W * lever * self._slope(a, th, phi, to_theta)))
         return 1.0 - total / math.pi
 
-    def stress(self, x, area: float, outer: float):
+    def stress(self, x, area: float, outer: float | None = None, *,
+               zone_angle: float | None = None):
         """``σ̃(x̃)`` (tensile positive) on the period, for contact ``Ã`` and outer length ``C̃``."""
-        a, th = self._check(area, outer)
+        a, th = self._check(area, outer, zone_angle)
         x = np.abs(np.asarray(x, dtype=float))
-        c = 0.5 * float(outer)
         al2, k2a = math.sin(a / 2) ** 2, math.cos(a / 2) ** 2
-        out = np.where((x >= a) & ((x < c) | (c >= math.pi)), self.cohesive_stress, 0.0)
+        zone = np.cos(x / 2) >= math.cos(a / 2) * math.cos(th)         # φ(x̃) <= θ
+        out = np.where((x >= a) & zone, self.cohesive_stress, 0.0)
         inside = x < a
         rest = al2 - np.sin(x[inside] / 2) ** 2
         k = np.sqrt(rest / k2a)
@@ -298,9 +318,10 @@ class MaugisDugdaleWavy:
         out[inside] = -self.modulus_ratio * np.cos(x[inside] / 2) * np.sqrt(rest) * (2 - z)
         return out
 
-    def gap(self, x, area: float, outer: float):
+    def gap(self, x, area: float, outer: float | None = None, *,
+            zone_angle: float | None = None):
         """Gap ``g̃(x̃)`` (``Λ`` units), zero in contact."""
-        a, th = self._check(area, outer)
+        a, th = self._check(area, outer, zone_angle)
         x = np.abs(np.asarray(x, dtype=float))
         out = np.zeros_like(x)
         for i, xi in np.ndenumerate(x):
@@ -348,19 +369,20 @@ class MaugisDugdaleWavy:
     def _state(self, a, th) -> MDState:
         c = 2 * math.acos(math.cos(a / 2) * math.cos(th))
         return MDState(area=2 * a, outer=2 * c, mean_pressure=self._pressure(a, th),
-                       penetration=self._penetration(a, th), saturated=th == _HALF_PI)
+                       penetration=self._penetration(a, th), saturated=th == _HALF_PI,
+                       zone_angle=th)
 
     def _pressure(self, a, th):
         return self.modulus_ratio * math.sin(a / 2) ** 2 - 2 * self.cohesive_stress * th / math.pi
 
     def states(self, area: float) -> tuple[MDState, ...]:
         """Every equilibrium with contact length ``Ã``, by increasing zone (1 to 3 of them)."""
-        a, _ = self._check(area)
+        a, _ = self._check(area, required=False)
         return tuple(self._state(a, th) for th in self._thetas(a))
 
     def state(self, area: float) -> MDState:
         """The equilibrium of smallest zone at ``Ã`` (continuous with Johnson's JKR branch)."""
-        a, _ = self._check(area)
+        a, _ = self._check(area, required=False)
         return self._state(a, self._thetas(a, smallest_only=True)[0])
 
     def _partial_pressure(self, area):
@@ -411,7 +433,7 @@ class MaugisDugdaleWavy:
             return self.state(ext[0])
         if self.h0 >= 2.0:
             return MDState(area=0.0, outer=2 * math.pi, mean_pressure=-self.cohesive_stress,
-                           penetration=0.0, saturated=True)
+                           penetration=0.0, saturated=True, zone_angle=_HALF_PI)
         trough = lambda a: (2 * (math.cos(a / 2) - math.sin(a / 2) ** 2
                                  * math.log(1 / math.tan(a / 4))) - self.h0)
         return self._state(optimize.brentq(trough, 1e-300, math.pi, xtol=1e-15, rtol=1e-15),
@@ -427,3 +449,9 @@ class MaugisDugdaleWavy:
         if not self._partial_pressure(lo) <= p <= self._partial_pressure(hi):
             return None
         return optimize.brentq(lambda A: self._partial_pressure(A) - p, lo, hi, xtol=1e-13)
+
+    def state_at_pressure(self, p: float):
+        """The stable partial-contact :class:`MDState` at mean pressure ``p`` (None outside the
+        range of :meth:`area_at_pressure`)."""
+        area = self.area_at_pressure(p)
+        return None if area is None else self.state(area)

@@ -230,11 +230,33 @@ def test_area_at_pressure_inverts_the_branch():
         area = md.area_at_pressure(p)
         assert area > off.area
         assert md.state(area).mean_pressure == pytest.approx(p, abs=1e-12)
+        assert md.state_at_pressure(p).area == area
         assert area == pytest.approx(JohnsonWavy(Gamma=0.05).area_at_pressure(p), rel=2e-2)
+
+
+def test_narrow_zones_by_their_angle():
+    """A state's exact zone angle gives the same fields as its outer length, and keeps the
+    equilibrium to round-off where the zone is too narrow for C̃ - Ã to carry the digits."""
+    md = MaugisDugdaleWavy(Gamma=0.05, h0=0.1)
+    st = md.state(2.0)
+    x = np.linspace(-math.pi, math.pi, 13)
+    assert md.stress(x, 2.0, zone_angle=st.zone_angle) == pytest.approx(
+        md.stress(x, 2.0, st.outer), abs=1e-12)
+    assert md.penetration(2.0, zone_angle=st.zone_angle) == pytest.approx(st.penetration,
+                                                                          abs=1e-15)
+    narrow = MaugisDugdaleWavy(Gamma=5.0, h0=2e-4, modulus_ratio=2.0)
+    st = narrow.state(0.4)
+    assert st.zone_width < 1e-7
+    assert narrow.zone_gap(0.4, zone_angle=st.zone_angle) == pytest.approx(2e-4, rel=1e-10)
+    assert narrow.mean_pressure(0.4, zone_angle=st.zone_angle) == st.mean_pressure
 
 
 def test_invalid_input_names_the_field():
     md = MaugisDugdaleWavy(Gamma=0.05, h0=0.1)
+    with pytest.raises(ValidationError, match="outer"):
+        md.penetration(2.0)
+    with pytest.raises(ValidationError, match="zone_angle"):
+        md.gap([1.0], 2.0, zone_angle=2.0)
     with pytest.raises(ValidationError, match="area"):
         md.state(7.0)
     with pytest.raises(ValidationError, match="outer"):
