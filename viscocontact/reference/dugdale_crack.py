@@ -80,9 +80,13 @@ CRACKS = ("opening", "closing")
 
 
 def _check_beta(beta: float) -> float:
-    if not (isinstance(beta, (int, float)) and math.isfinite(beta) and beta >= 1.0):
+    try:
+        b = float(beta)
+    except (TypeError, ValueError):
+        b = math.nan
+    if not (math.isfinite(b) and b >= 1.0):
         raise ValidationError("beta", beta, "a finite real number >= 1")
-    return float(beta)
+    return b
 
 
 def _check_crack(crack: str) -> str:
@@ -186,7 +190,7 @@ def steady_crack(speed: float, beta: float, crack: str = "opening") -> CrackStat
     v = float(speed)
     if not (math.isfinite(v) and v > 0):
         raise ValidationError("speed", speed, "a finite real number > 0")
-    # κ·(a0/a) rises from 0 to ∞ with κ; a/a0 lies in [1/β, β] so κ in [1/(βv), β/v]
+    # κ·(a0/a) rises from 0 to ∞ with κ; a/a0 lies within [1/2, β], so κ within [1/(2v), β/v]
     g = lambda lk: math.exp(lk) / zone_length(math.exp(lk), beta, crack) - 1.0 / v
     lo, hi = math.log(1.0 / (beta * v)) - 1.0, math.log(beta / v) + 1.0
     kappa = math.exp(optimize.brentq(g, lo, hi, xtol=1e-14, rtol=1e-14))

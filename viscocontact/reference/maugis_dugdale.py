@@ -193,6 +193,8 @@ class MaugisDugdaleWavy:
     def from_transition(cls, *, Gamma: float, transition: float,
                         modulus_ratio: float = 1.0) -> MaugisDugdaleWavy:
         """The range η that gives the transition parameter ``λ`` at this ``Γ̃`` and β."""
+        if not (math.isfinite(transition) and transition > 0):
+            raise ValidationError("transition", transition, "a finite real number > 0")
         h0 = 2 * math.pi ** (1 / 3) * (Gamma / modulus_ratio) ** (2 / 3) / transition
         return cls(Gamma=Gamma, h0=h0, modulus_ratio=modulus_ratio)
 
