@@ -10,35 +10,57 @@
     /points              attrs: count = number of finished points
     /points/<column>     one 1-D dataset per column of point.COLUMNS, one row per point
                          (str columns are UTF-8 strings, ``edges`` variable-length float64)
-    /fields/<row>        x, pressure, displacement, gap of point <row> (6 digits; on request)
+    /points/row          int64 0 .. n-1, the dimension scale "row" of every column
+    /fields/<row>        x, pressure, displacement, gap of point <row> (6 digits; on request;
+                         x is the dimension scale of the others)
 
 The header is written to a temporary file that is renamed into place, so a study file either
 exists complete with its header or not at all. Each finished point is appended by opening the
 file, writing the row, raising ``/points.count`` last and closing it, so a killed run leaves a
 file holding every point finished before the kill; rows beyond ``count`` (a write cut short) are
 ignored and overwritten on resume. The file is opened only for the moment of a write, which keeps
-it readable (``viscocontact plot``) while the study runs.
+it readable (``viscocontact plot``) while the study runs; a write that finds the file open in
+another program (HDF5's file lock) waits for it up to :data:`WRITE_WAIT` seconds, a read up to
+:data:`READ_WAIT`. Signals that would end the process during an append are held until the append
+is done, and only one process computes into a study file at a time
+(:mod:`~viscocontact.studies.guard`).
+
+HDF5 dimension scales name the dimensions, so that ``xarray.open_dataset(path, group="points",
+engine="h5netcdf")`` opens the points with a ``row`` dimension (and no ``phony_dim_*``):
+``/points/row`` holds ``0 .. n-1`` and is the scale of every column, ``/seeds`` is its own scale,
+and ``x`` is the scale of the fields of a point. Files written by 0.1.0 have no scales; they
+are read (and resumed) all the same.
 """
 from __future__ import annotations
 
 import datetime
 import json
 import os
+import re
+import time
 from pathlib import Path
 from typing import Any, Mapping
 
 import numpy as np
 
 from ..errors import ValidationError, ViscoContactError
+from .guard import signals_deferred
 from .point import COLUMNS
 
 FORMAT = "viscocontact.study"
 FORMAT_VERSION = 1
 FIELD_NAMES = ("x", "pressure", "displacement", "gap")
+ROW = "row"
+
+#: Seconds a write (append) waits for another program to close the file (HDF5 file lock).
+WRITE_WAIT = 60.0
+#: Seconds a read waits for a write in progress to finish.
+READ_WAIT = 5.0
 
 
 class StudyFileError(ViscoContactError):
-    """A study file that cannot be used: not HDF5, damaged, foreign, or of another study."""
+    """A study file that cannot be used: not HDF5, damaged, foreign, or of another study; an output
+    path that cannot hold one; a file another process is computing into; a failed write."""
 
 
 def _h5py():
@@ -53,21 +75,68 @@ def _dtype(kind: str):
             "str": h5py.string_dtype("utf-8"), "edges": h5py.vlen_dtype(np.float64)}[kind]
 
 
-def _open(path: Path, mode: str):
+def _locked(exc: OSError) -> bool:
+    return isinstance(exc, BlockingIOError) or "unable to lock file" in str(exc)
+
+
+def _open_error(path: Path, exc: OSError, waited: float) -> StudyFileError:
+    """The true reason why HDF5 could not open ``path``."""
+    text = " ".join(str(exc).split())
+    if _locked(exc):
+        return StudyFileError(
+            f"{path} is held open by another process (HDF5 file lock) and was not released "
+            f"within {waited:g} s: a study appending a point holds it for a moment, a program "
+            "that keeps it open (e.g. h5py.File in a notebook) until it closes it")
+    truncated = re.search(r"truncated file: eof = (\d+).*stored_eof = (\d+)", text)
+    if truncated:
+        have, want = truncated.groups()
+        return StudyFileError(f"{path} is truncated: it has {have} of its {want} bytes (a copy "
+                              "or a transfer cut short, or a full disk); it cannot be read")
+    if "file signature not found" in text:
+        size = path.stat().st_size
+        what = "it is empty" if size == 0 else f"its {size} bytes have no HDF5 signature"
+        return StudyFileError(f"{path} is not a readable HDF5 file: {what} (not a study file)")
+    if isinstance(exc, PermissionError):
+        return StudyFileError(f"cannot open {path}: permission denied")
+    return StudyFileError(f"{path} is not a readable HDF5 file (damaged or not HDF5): {text}")
+
+
+def _open(path: Path, mode: str, wait: float = READ_WAIT):
+    """``h5py.File(path, mode)``, waiting up to ``wait`` s while another process holds it."""
     h5py = _h5py()
     if not path.exists():
         raise FileNotFoundError(2, "No such file", str(path))
     if path.is_dir():
         raise StudyFileError(f"{path} is a folder, not a study file")
-    try:
-        return h5py.File(path, mode)
-    except OSError as exc:
-        text = str(exc)
-        if "lock" in text:
-            raise StudyFileError(f"{path} is being written by another process (HDF5 file lock): "
-                                 "try again in a moment") from exc
-        raise StudyFileError(f"{path} is not a readable HDF5 file (damaged, truncated or not "
-                             f"HDF5): {text}") from exc
+    start, pause = time.monotonic(), 0.005
+    while True:
+        try:
+            return h5py.File(path, mode)
+        except OSError as exc:
+            waited = time.monotonic() - start
+            if _locked(exc) and waited < wait:
+                time.sleep(min(pause, wait - waited))
+                pause = min(2 * pause, 0.25)
+                continue
+            raise _open_error(path, exc, wait) from exc
+
+
+def check_output(path) -> None:
+    """Raise :class:`StudyFileError` if ``path`` cannot be (or hold) a study file written here:
+    a folder, in a missing folder or in one this process may not write to."""
+    path = Path(path)
+    folder = path.parent
+    if path.is_dir():
+        raise StudyFileError(f"{path} is a folder: the study file needs a file name, e.g. "
+                             f"{path / 'study.h5'}")
+    if not folder.exists():
+        raise StudyFileError(f"cannot write {path}: the folder {folder} does not exist")
+    if not folder.is_dir():
+        raise StudyFileError(f"cannot write {path}: {folder} is not a folder")
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise StudyFileError(f"cannot write {path}: no permission to create files in {folder}")
+    if path.exists() and not os.access(path, os.R_OK | os.W_OK):
+        raise StudyFileError(f"cannot write {path}: no permission to read and write it")
 
 
 def _check_header(f, path: Path) -> None:
@@ -97,66 +166,107 @@ def _check_header(f, path: Path) -> None:
 
 # ---- writing ------------------------------------------------------------------------------------
 def create(path, study) -> None:
-    """Write the header of a new study file (atomically: temporary file, then rename)."""
+    """Write the header of a new study file (atomically: temporary file, then rename).
+
+    Raises :class:`StudyFileError` for a path that cannot hold a study file (:func:`check_output`)
+    or a failed write; no temporary file is left behind.
+    """
     from .. import __version__
 
     h5py = _h5py()
     path = Path(path)
+    check_output(path)
     tmp = path.with_name(path.name + ".tmp")
-    with h5py.File(tmp, "w") as f:
-        f.attrs["format"] = FORMAT
-        f.attrs["format_version"] = FORMAT_VERSION
-        f.attrs["kind"] = study.kind
-        f.attrs["viscocontact_version"] = __version__
-        f.attrs["created"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
-            timespec="seconds")
-        f.attrs["complete"] = False
-        f.create_dataset("scene", data=study.scene.to_toml(), dtype=h5py.string_dtype("utf-8"))
-        f.create_dataset("study", data=json.dumps(study.params()),
-                         dtype=h5py.string_dtype("utf-8"))
-        f.create_dataset("seeds", data=np.asarray(study.seeds or (), dtype=np.int64))
-        points = f.create_group("points")
-        points.attrs["count"] = 0
-        for column, kind in COLUMNS.items():
-            points.create_dataset(column, shape=(0,), maxshape=(None,), chunks=(256,),
-                                  dtype=_dtype(kind))
-        f.create_group("fields")
-    os.replace(tmp, path)
+    try:
+        with signals_deferred():
+            with h5py.File(tmp, "w") as f:
+                f.attrs["format"] = FORMAT
+                f.attrs["format_version"] = FORMAT_VERSION
+                f.attrs["kind"] = study.kind
+                f.attrs["viscocontact_version"] = __version__
+                f.attrs["created"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
+                    timespec="seconds")
+                f.attrs["complete"] = False
+                f.create_dataset("scene", data=study.scene.to_toml(),
+                                 dtype=h5py.string_dtype("utf-8"))
+                f.create_dataset("study", data=json.dumps(study.params()),
+                                 dtype=h5py.string_dtype("utf-8"))
+                f.create_dataset("seeds", data=np.asarray(study.seeds or (), dtype=np.int64))
+                f["seeds"].make_scale("seeds")
+                points = f.create_group("points")
+                points.attrs["count"] = 0
+                row = points.create_dataset(ROW, shape=(0,), maxshape=(None,), chunks=(256,),
+                                            dtype=np.int64)
+                row.make_scale(ROW)
+                for column, kind in COLUMNS.items():
+                    ds = points.create_dataset(column, shape=(0,), maxshape=(None,),
+                                               chunks=(256,), dtype=_dtype(kind))
+                    ds.dims[0].attach_scale(row)
+                f.create_group("fields")
+            os.replace(tmp, path)
+    except BaseException as exc:
+        tmp.unlink(missing_ok=True)
+        if isinstance(exc, OSError):
+            raise StudyFileError(f"cannot write {path}: {exc.strerror or exc}") from exc
+        raise
 
 
 def append(path, record: Mapping[str, Any]) -> int:
-    """Append one point (a :func:`~viscocontact.studies.point.solve_point` record); its row."""
+    """Append one point (a :func:`~viscocontact.studies.point.solve_point` record); its row.
+
+    The count is raised last, so a write that fails (a full disk) or is killed leaves the file
+    with every earlier point; such a failure raises :class:`StudyFileError` saying so.
+    """
     path = Path(path)
-    with _open(path, "r+") as f:
-        points = f["points"]
-        row = int(points.attrs["count"])
-        for column, kind in COLUMNS.items():
-            ds = points[column]
-            if ds.shape[0] < row + 1:
-                ds.resize((row + 1,))
-            value = record[column]
-            if kind == "edges":
-                value = np.asarray(value, dtype=np.float64).ravel()
-            elif kind == "str":
-                value = str(value)
-            ds[row] = value
-        fields = record.get("fields")
-        name = f"{row:06d}"
-        if name in f["fields"]:
-            del f["fields"][name]          # left over from a write cut short
-        if fields:
-            group = f["fields"].create_group(name)
-            for key in FIELD_NAMES:
-                if key in fields:
-                    group.create_dataset(key, data=np.asarray(fields[key], dtype=np.float64))
-        points.attrs["count"] = row + 1    # last: the row now counts
-        f.flush()
+    row = None
+    try:
+        with signals_deferred(), _open(path, "r+", wait=WRITE_WAIT) as f:
+            points = f["points"]
+            row = int(points.attrs["count"])
+            for column, kind in COLUMNS.items():
+                ds = points[column]
+                if ds.shape[0] < row + 1:
+                    ds.resize((row + 1,))
+                value = record[column]
+                if kind == "edges":
+                    value = np.asarray(value, dtype=np.float64).ravel()
+                elif kind == "str":
+                    value = str(value)
+                ds[row] = value
+            fields = record.get("fields")
+            name = f"{row:06d}"
+            if name in f["fields"]:
+                del f["fields"][name]          # left over from a write cut short
+            if fields:
+                _write_fields(f["fields"].create_group(name), fields)
+            if ROW in points:                  # files of 0.1.0 have no row scale
+                if points[ROW].shape[0] < row + 1:
+                    points[ROW].resize((row + 1,))
+                points[ROW][row] = row
+            points.attrs["count"] = row + 1    # last: the row now counts
+            f.flush()
+    except OSError as exc:
+        kept = "its earlier points" if row is None else f"the {row} points before it"
+        raise StudyFileError(f"cannot write a point to {path}: {exc.strerror or exc}; the file "
+                             f"keeps {kept}: remove the cause and continue with --resume") from exc
     return row
+
+
+def _write_fields(group, fields: Mapping[str, Any]) -> None:
+    scale = None
+    for key in FIELD_NAMES:
+        if key in fields:
+            ds = group.create_dataset(key, data=np.asarray(fields[key], dtype=np.float64))
+            if key == "x":
+                ds.make_scale("x")
+                scale = ds
+            elif scale is not None and ds.shape == scale.shape:
+                ds.dims[0].attach_scale(scale)
 
 
 def set_complete(path, complete: bool) -> None:
     """Mark the study finished (every chain has ended) or not."""
-    with _open(Path(path), "r+") as f:
+    with signals_deferred(), _open(Path(path), "r+", wait=WRITE_WAIT) as f:
         f.attrs["complete"] = bool(complete)
 
 
@@ -164,7 +274,7 @@ def note_resume(path) -> None:
     """Record the version of viscocontact that resumed the study (if it differs)."""
     from .. import __version__
 
-    with _open(Path(path), "r+") as f:
+    with signals_deferred(), _open(Path(path), "r+", wait=WRITE_WAIT) as f:
         if str(f.attrs.get("viscocontact_version")) != __version__:
             f.attrs["resumed_with_version"] = __version__
 
