@@ -217,9 +217,10 @@ def _scheduler(args):
         return None
     from .studies.parallel import DaskScheduler
 
-    if args.scheduler == "config":
-        return DaskScheduler(scheduler_file=args.scheduler_file)
-    return DaskScheduler(address=args.scheduler, scheduler_file=args.scheduler_file)
+    spec = DaskScheduler(address=None if args.scheduler == "config" else args.scheduler,
+                         scheduler_file=args.scheduler_file)
+    spec.resolve()  # an unset address or a missing scheduler file: said before any file is made
+    return spec
 
 
 def _run_study_file(args, kind: str, build) -> int:

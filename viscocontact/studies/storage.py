@@ -33,6 +33,7 @@ are read (and resumed) all the same.
 """
 from __future__ import annotations
 
+import contextlib
 import datetime
 import json
 import os
@@ -165,6 +166,44 @@ def _check_header(f, path: Path) -> None:
 
 
 # ---- writing ------------------------------------------------------------------------------------
+def _write_atomically(path: Path, fill) -> None:
+    """Write a new file with ``fill(h5py.File)`` into ``path.tmp`` and rename it to ``path``;
+    no temporary file is left behind, and an OSError becomes a :class:`StudyFileError`."""
+    h5py = _h5py()
+    tmp = path.with_name(path.name + ".tmp")
+    try:
+        with signals_deferred():
+            with h5py.File(tmp, "w") as f:
+                fill(f)
+            os.replace(tmp, path)
+    except BaseException as exc:
+        tmp.unlink(missing_ok=True)
+        if isinstance(exc, OSError):
+            raise StudyFileError(f"cannot write {path}: {exc.strerror or exc}") from exc
+        raise
+
+
+def _layout(f, header: Mapping[str, Any], scene: str, params: str, seeds, count: int = 0):
+    """The groups and datasets of a study file (``count`` rows); its ``/points`` group."""
+    h5py = _h5py()
+    for key, value in header.items():
+        f.attrs[key] = value
+    f.create_dataset("scene", data=scene, dtype=h5py.string_dtype("utf-8"))
+    f.create_dataset("study", data=params, dtype=h5py.string_dtype("utf-8"))
+    f.create_dataset("seeds", data=np.asarray(seeds, dtype=np.int64)).make_scale("seeds")
+    points = f.create_group("points")
+    row = points.create_dataset(ROW, data=np.arange(count, dtype=np.int64), maxshape=(None,),
+                                chunks=(256,))
+    row.make_scale(ROW)
+    for column, kind in COLUMNS.items():
+        ds = points.create_dataset(column, shape=(count,), maxshape=(None,), chunks=(256,),
+                                   dtype=_dtype(kind))
+        ds.dims[0].attach_scale(row)
+    f.create_group("fields")
+    points.attrs["count"] = count
+    return points
+
+
 def create(path, study) -> None:
     """Write the header of a new study file (atomically: temporary file, then rename).
 
@@ -173,42 +212,59 @@ def create(path, study) -> None:
     """
     from .. import __version__
 
-    h5py = _h5py()
     path = Path(path)
     check_output(path)
+    header = {"format": FORMAT, "format_version": FORMAT_VERSION, "kind": study.kind,
+              "viscocontact_version": __version__,
+              "created": datetime.datetime.now(datetime.timezone.utc).isoformat(
+                  timespec="seconds"),
+              "complete": False}
+    _write_atomically(path, lambda f: _layout(f, header, study.scene.to_toml(),
+                                              json.dumps(study.params()), study.seeds or ()))
+
+
+def rewrite(path) -> None:
+    """Write a study file anew from the points it counts (atomically), in the current layout.
+
+    A process killed in the middle of an append (``SIGKILL``, the out-of-memory killer) leaves
+    a file whose counted points read correctly but whose HDF5 metadata may refuse the next
+    write ("len not positive after adjustment for EOA"); the rewrite, done when a study is
+    resumed, drops such leftovers (and gives files of 0.1.0 the dimension scales).
+    """
+    path = Path(path)
     tmp = path.with_name(path.name + ".tmp")
-    try:
-        with signals_deferred():
-            with h5py.File(tmp, "w") as f:
-                f.attrs["format"] = FORMAT
-                f.attrs["format_version"] = FORMAT_VERSION
-                f.attrs["kind"] = study.kind
-                f.attrs["viscocontact_version"] = __version__
-                f.attrs["created"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
-                    timespec="seconds")
-                f.attrs["complete"] = False
-                f.create_dataset("scene", data=study.scene.to_toml(),
-                                 dtype=h5py.string_dtype("utf-8"))
-                f.create_dataset("study", data=json.dumps(study.params()),
-                                 dtype=h5py.string_dtype("utf-8"))
-                f.create_dataset("seeds", data=np.asarray(study.seeds or (), dtype=np.int64))
-                f["seeds"].make_scale("seeds")
-                points = f.create_group("points")
-                points.attrs["count"] = 0
-                row = points.create_dataset(ROW, shape=(0,), maxshape=(None,), chunks=(256,),
-                                            dtype=np.int64)
-                row.make_scale(ROW)
-                for column, kind in COLUMNS.items():
-                    ds = points.create_dataset(column, shape=(0,), maxshape=(None,),
-                                               chunks=(256,), dtype=_dtype(kind))
-                    ds.dims[0].attach_scale(row)
-                f.create_group("fields")
-            os.replace(tmp, path)
-    except BaseException as exc:
-        tmp.unlink(missing_ok=True)
-        if isinstance(exc, OSError):
-            raise StudyFileError(f"cannot write {path}: {exc.strerror or exc}") from exc
-        raise
+    with _reading(path) as src:
+        count = int(src["points"].attrs["count"])
+        header = {k: v for k, v in src.attrs.items()}
+
+        def fill(f):
+            points = _layout(f, header, _text(src["scene"]), _text(src["study"]),
+                             src["seeds"][()], count)
+            for column, kind in COLUMNS.items():
+                if not count:
+                    continue
+                values = src["points"][column][:count]
+                if kind == "edges":  # row by row: h5py makes equal-length rows one 2-D array
+                    for i, value in enumerate(values):
+                        points[column][i] = value
+                else:
+                    points[column][:] = values
+            for name, group in src["fields"].items():
+                if name.isdigit() and int(name) < count:
+                    _write_fields(f["fields"].create_group(name),
+                                  {k: group[k][()] for k in group})
+
+        try:
+            with signals_deferred():
+                with _h5py().File(tmp, "w") as f:
+                    fill(f)
+        except BaseException as exc:
+            tmp.unlink(missing_ok=True)
+            if isinstance(exc, OSError):
+                raise StudyFileError(f"cannot write {path}: {exc.strerror or exc}") from exc
+            raise
+    with signals_deferred():
+        os.replace(tmp, path)
 
 
 def append(path, record: Mapping[str, Any]) -> int:
@@ -243,8 +299,8 @@ def append(path, record: Mapping[str, Any]) -> int:
                 if points[ROW].shape[0] < row + 1:
                     points[ROW].resize((row + 1,))
                 points[ROW][row] = row
+            f.flush()                          # the row on disk before it counts
             points.attrs["count"] = row + 1    # last: the row now counts
-            f.flush()
     except OSError as exc:
         kept = "its earlier points" if row is None else f"the {row} points before it"
         raise StudyFileError(f"cannot write a point to {path}: {exc.strerror or exc}; the file "
@@ -271,15 +327,28 @@ def set_complete(path, complete: bool) -> None:
 
 
 def note_resume(path) -> None:
-    """Record the version of viscocontact that resumed the study (if it differs)."""
+    """Prepare a study file to be continued: :func:`rewrite` it, and record the version of
+    viscocontact that resumed it (if it differs)."""
     from .. import __version__
 
+    rewrite(path)
     with signals_deferred(), _open(Path(path), "r+", wait=WRITE_WAIT) as f:
         if str(f.attrs.get("viscocontact_version")) != __version__:
             f.attrs["resumed_with_version"] = __version__
 
 
 # ---- reading ------------------------------------------------------------------------------------
+@contextlib.contextmanager
+def _reading(path: Path):
+    """The open study file (header checked); an HDF5 error while reading says it is damaged."""
+    with _open(path, "r") as f:
+        try:
+            _check_header(f, path)
+            yield f
+        except (OSError, KeyError) as exc:
+            raise StudyFileError(f"{path} is damaged: {' '.join(str(exc).split())}") from exc
+
+
 def _text(ds) -> str:
     value = ds[()]
     return value.decode("utf-8") if isinstance(value, bytes) else str(value)
@@ -289,8 +358,7 @@ def read_header(path) -> dict[str, Any]:
     """``kind``, ``scene`` (TOML), ``params``, ``seeds``, ``version``, ``created``, ``complete``,
     ``count`` of a study file; raises :class:`StudyFileError` for a foreign or damaged file."""
     path = Path(path)
-    with _open(path, "r") as f:
-        _check_header(f, path)
+    with _reading(path) as f:
         try:
             params = json.loads(_text(f["study"]))
         except ValueError as exc:
@@ -307,8 +375,7 @@ def read_header(path) -> dict[str, Any]:
 def read_points(path) -> dict[str, np.ndarray]:
     """Every finished point: one array per column (``edges``: an object array of float arrays)."""
     path = Path(path)
-    with _open(path, "r") as f:
-        _check_header(f, path)
+    with _reading(path) as f:
         points = f["points"]
         n = int(points.attrs["count"])
         out: dict[str, np.ndarray] = {}
@@ -330,8 +397,7 @@ def read_points(path) -> dict[str, np.ndarray]:
 def read_fields(path, row: int) -> dict[str, np.ndarray] | None:
     """The fields stored for point ``row`` (None if none were stored)."""
     path = Path(path)
-    with _open(path, "r") as f:
-        _check_header(f, path)
+    with _reading(path) as f:
         group = f["fields"].get(f"{int(row):06d}")
         if group is None or int(row) >= int(f["points"].attrs["count"]):
             return None
