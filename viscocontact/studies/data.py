@@ -266,6 +266,9 @@ class StudyData:
             coords = {"variant": list(study.variants), "load": list(study.loads),
                       "seed": list(study.seeds or (-1,)), "zeta": list(study.zetas)}
             where = [(*at[:3], at[3] + step) for at, step in self._steps(study.grid())]
+            if any(iz >= len(study.zetas) for *_, iz in where):
+                raise storage.StudyFileError(f"{self.path} is damaged: its points name ζ steps "
+                                             "beyond the study's ζ")
             skip = set(dims) | {"control", "phase"}
         else:
             dims = ("zeta", "gamma", "seed", "step")
@@ -301,6 +304,9 @@ class StudyData:
     def _steps(self, grid):
         """``(grid position of the point's chain, step)`` of every stored row."""
         chain, step = self.points["chain"], self.points["step"]
+        if len(self) and not (0 <= chain.min() and chain.max() < len(grid) and step.min() >= 0):
+            raise storage.StudyFileError(f"{self.path} is damaged: its points name chains or "
+                                         "steps that its study does not have")
         return [(grid[int(c)], int(k)) for c, k in zip(chain, step)]
 
     def _metrics_on(self, grid, shape, dims) -> dict:

@@ -6,6 +6,12 @@ The runner submits the next point of a chain only when the previous one is back,
 over independent chains (loads, realizations, adhesive and adhesionless twins, cycles), never
 along a ζ-continuation or a loading path, which are sequential by nature.
 
+On a Dask cluster (:class:`DaskBackend`) the scheduler is found from an address, a scheduler
+file or Dask's own configuration (:class:`DaskScheduler`, which also holds the connect timeout
+and the retries); finished points come from one ``distributed.as_completed`` to which each chain
+adds its next point, and a point Dask gives up on (its workers died, ``KilledWorker``) is stored
+as an error so that the study goes on.
+
 Every backend runs the same pure function (:func:`~viscocontact.studies.point.solve_point`) on the
 same plain data, and BLAS runs single-threaded inside it (:func:`single_blas_thread`; a
 multi-threaded BLAS sums in another order and changes the last bits), so serial, process-pool and

@@ -9,7 +9,7 @@ import sys
 import numpy as np
 import pytest
 
-from viscocontact.studies import Cycle, Sweep, load_study, storage
+from viscocontact.studies import Cycle, StudyFileError, Sweep, load_study, storage
 from viscocontact.studies.point import COLUMNS
 
 
@@ -164,3 +164,12 @@ def test_missing_extra_is_named(sweep_file, monkeypatch, method, module):
     with pytest.raises(ImportError, match=r"pip install 'viscocontact\[xarray\]'") as info:
         getattr(load_study(sweep_file), method)()
     assert module in str(info.value)
+
+
+def test_points_off_the_grid_are_a_damaged_file(tmp_path, adhesionless):
+    pytest.importorskip("xarray")
+    path = tmp_path / "s.h5"
+    storage.create(path, Sweep(scene=adhesionless, zetas=[0.1, 1.0]))
+    storage.append(path, record(0, 2, zeta=10.0))           # a third ζ the study does not have
+    with pytest.raises(StudyFileError, match="s.h5 is damaged"):
+        load_study(path).to_xarray()
