@@ -101,3 +101,29 @@ def test_cli_scheduler_config_without_an_address(tmp_path, capsys, monkeypatch):
     code = main(["sweep", str(scene), "--zetas", "1", "--out", str(tmp_path / "x.h5"),
                  "--scheduler-file", str(tmp_path / "none.json"), "--quiet"])
     assert code == 2 and "no such scheduler file" in capsys.readouterr().err
+
+
+def _stay(seconds):
+    """Where a task started and ended (perf_counter, the same clock for in-process workers)."""
+    import time
+
+    start = time.perf_counter()
+    time.sleep(seconds)
+    return start, time.perf_counter()
+
+
+def test_points_on_a_multithreaded_worker_take_turns():
+    """A worker with two threads is warned about, and its points do not overlap in time."""
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        with pytest.warns(RuntimeWarning, match="one point at a time per worker process"):
+            pool = DaskBackend(client)
+        handles = [pool.submit(_stay, 0.2) for _ in range(3)]
+        done = []
+        while len(done) < 3:
+            done += pool.wait(handles)
+        spans = sorted(h.result() for h in done)
+        pool.close()
+        assert client.status == "running"                  # a client passed in stays open
+    assert all(end <= nxt for (_, end), (nxt, _) in zip(spans, spans[1:]))
