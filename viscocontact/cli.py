@@ -404,9 +404,23 @@ def _run_plot(args: argparse.Namespace) -> int:
     """Draw a study file: area and friction against ζ, or the load-penetration loops."""
     from .plots import plot_study
 
+    if args.out is not None:
+        _check_folder("--out", args.out, "a folder for the PNG files")
     for f in plot_study(_path(args.file), out=args.out):
         print(f"wrote {f}")
     return 0
+
+
+def _check_folder(option: str, name: str, what: str) -> None:
+    """A folder to write into (made if missing) must not be a file, nor lie below one."""
+    from pathlib import Path
+
+    path = Path(name)
+    for folder in (path, *path.parents):
+        if folder.exists():
+            if not folder.is_dir():
+                raise ValidationError(option, name, f"{what} ({folder} is a file)")
+            return
 
 
 # ---- study --------------------------------------------------------------------------------------
@@ -425,9 +439,7 @@ def _run_study(args: argparse.Namespace) -> int:
     import os
 
     workers = args.workers if args.workers is not None else (os.cpu_count() or 1)
-    if os.path.exists(args.out) and not os.path.isdir(args.out):
-        raise ValidationError("--out", args.out, "a folder for study.h5 and the plots (it is a "
-                                                 "file)")
+    _check_folder("--out", args.out, "a folder for study.h5 and the plots")
     files = WavyStudy().run(args.out, workers=workers,
                             progress=None if args.quiet else sys.stderr)
     for f in files:

@@ -112,10 +112,21 @@ def test_not_hdf5(tmp_path, capsys, content, fragment):
     assert fragment in one_line_error(capsys, main(["plot", str(path)]))
 
 
-def test_study_output_is_a_file(tmp_path, capsys):
+@pytest.mark.parametrize("below", ["", "sub"])
+def test_study_output_is_a_file(tmp_path, capsys, below):
     (tmp_path / "afile").write_text("x")
-    err = one_line_error(capsys, main(["study", "--out", str(tmp_path / "afile"), "--quiet"]))
-    assert "--out" in err and "it is a file" in err
+    out = tmp_path / "afile" / below
+    err = one_line_error(capsys, main(["study", "--out", str(out), "--quiet"]))
+    assert "--out" in err and f"({tmp_path / 'afile'} is a file)" in err
+
+
+@pytest.mark.parametrize("below", ["", "sub"])
+def test_plot_output_is_a_file(tmp_path, adhesionless, capsys, below):
+    storage.create(tmp_path / "s.h5", Sweep(scene=adhesionless, zetas=[1.0]))
+    (tmp_path / "afile").write_text("x")
+    err = one_line_error(capsys, main(["plot", str(tmp_path / "s.h5"), "--out",
+                                       str(tmp_path / "afile" / below)]))
+    assert "a folder for the PNG files" in err and "afile is a file" in err
 
 
 def test_a_study_file_made_unreadable_mid_read_is_damaged(tmp_path, adhesionless, monkeypatch):
