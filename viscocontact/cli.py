@@ -187,8 +187,12 @@ def _add_study_options(parser: argparse.ArgumentParser, kind: str) -> None:
     parser.add_argument("--workers", metavar="N", type=int, default=1,
                         help="compute independent chains in N processes (default 1)")
     parser.add_argument("--scheduler", metavar="ADDRESS", default=None,
-                        help="send the points to this Dask distributed scheduler "
-                             "(pip install 'viscocontact[distributed]')")
+                        help="send the points to this Dask distributed scheduler, or to the one "
+                             "in Dask's configuration with 'config' (scheduler-address, "
+                             "DASK_SCHEDULER_ADDRESS); pip install 'viscocontact[distributed]'")
+    parser.add_argument("--scheduler-file", metavar="FILE", default=None,
+                        help="send the points to the Dask scheduler that wrote FILE "
+                             "(dask scheduler --scheduler-file FILE)")
     parser.add_argument("--time-limit", metavar="SECONDS", type=float, default=None,
                         help="seconds allowed to one point; a point past it is stored as an "
                              "error and its chain goes on (default: no limit)")
@@ -217,6 +221,18 @@ def _discretization(args):
     return disc or None
 
 
+def _scheduler(args):
+    """The Dask scheduler of ``--scheduler`` / ``--scheduler-file`` (None: no Dask)."""
+    if args.scheduler is None and args.scheduler_file is None:
+        return None
+    from .studies.parallel import DaskScheduler
+
+    spec = DaskScheduler(address=None if args.scheduler == "config" else args.scheduler,
+                         scheduler_file=args.scheduler_file)
+    spec.resolve()  # an unset address or a missing scheduler file: said before any file is made
+    return spec
+
+
 def _run_study_file(args, kind: str, build) -> int:
     """Build the study (or take it from the file with --resume alone), run it, report."""
     from pathlib import Path
@@ -225,7 +241,7 @@ def _run_study_file(args, kind: str, build) -> int:
 
     if args.time_limit is not None and not 0 < args.time_limit < float("inf"):
         raise ValidationError("--time-limit", args.time_limit, "a finite number of seconds > 0")
-    options = dict(workers=args.workers, scheduler=args.scheduler,
+    options = dict(workers=args.workers, scheduler=_scheduler(args),
                    progress=None if args.quiet else sys.stderr, time_limit=args.time_limit)
     if args.scene is None:
         if not (args.resume and args.out):
@@ -398,9 +414,23 @@ def _run_plot(args: argparse.Namespace) -> int:
     """Draw a study file: area and friction against ζ, or the load-penetration loops."""
     from .plots import plot_study
 
+    if args.out is not None:
+        _check_folder("--out", args.out, "a folder for the PNG files")
     for f in plot_study(_path(args.file), out=args.out):
         print(f"wrote {f}")
     return 0
+
+
+def _check_folder(option: str, name: str, what: str) -> None:
+    """A folder to write into (made if missing) must not be a file, nor lie below one."""
+    from pathlib import Path
+
+    path = Path(name)
+    for folder in (path, *path.parents):
+        if folder.exists():
+            if not folder.is_dir():
+                raise ValidationError(option, name, f"{what} ({folder} is a file)")
+            return
 
 
 # ---- study --------------------------------------------------------------------------------------
@@ -419,6 +449,7 @@ def _run_study(args: argparse.Namespace) -> int:
     import os
 
     workers = args.workers if args.workers is not None else (os.cpu_count() or 1)
+    _check_folder("--out", args.out, "a folder for study.h5 and the plots")
     files = WavyStudy().run(args.out, workers=workers,
                             progress=None if args.quiet else sys.stderr)
     for f in files:
@@ -507,10 +538,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"viscocontact {args.command}: error: invalid TOML in "
               f"{getattr(args, 'scene', '?')}: {_one_line(exc)}", file=sys.stderr)
     except FileNotFoundError as exc:
-        print(f"viscocontact {args.command}: error: no such file: {exc.filename}", file=sys.stderr)
+        what = f"no such file: {exc.filename}" if exc.filename else _one_line(exc)
+        print(f"viscocontact {args.command}: error: {what}", file=sys.stderr)
     except (IsADirectoryError, PermissionError, UnicodeDecodeError) as exc:
-        print(f"viscocontact {args.command}: error: cannot read "
-              f"{getattr(args, 'scene', '?')}: {_one_line(exc)}", file=sys.stderr)
+        name = getattr(exc, "filename", None) or getattr(args, "scene", "?")
+        print(f"viscocontact {args.command}: error: cannot read {name}: "
+              f"{_one_line(getattr(exc, 'strerror', None) or exc)}", file=sys.stderr)
     return EXIT_USAGE
 
 

@@ -85,14 +85,28 @@ def _is_number(value: Any) -> bool:
 
 
 def _as_float(value: Any) -> Any:
-    return float(value) if _is_number(value) else value
+    try:
+        return float(value) if _is_number(value) else value
+    except OverflowError:  # an integer beyond the float range: the validator rejects it
+        return value
+
+
+def _overflows(value: Any) -> bool:
+    """Whether ``value`` (or an item of it) is an integer too large for a float."""
+    if isinstance(value, (list, tuple)):
+        return any(_overflows(v) for v in value)
+    try:
+        float(value) if _is_number(value) else None
+    except OverflowError:
+        return True
+    return False
 
 
 def _check_number(field: str, value: Any, lo=None, hi=None, lo_open=False) -> None:
     interval = (f"{'(' if lo_open else '['}{'-inf' if lo is None else lo}, "
                 f"{'inf' if hi is None else hi}]")
     desc = f"a finite real number in {interval}"
-    if not _is_number(value) or not math.isfinite(float(value)):
+    if not _is_number(value) or _overflows(value) or not math.isfinite(float(value)):
         raise ValidationError(field, value, desc)
     v = float(value)
     if lo is not None and (v < lo or (lo_open and v == lo)):
@@ -202,9 +216,11 @@ def _instantiate(section: str, kind: str, cls: type, params: dict[str, Any]) -> 
     except ValidationError as exc:
         attr = exc.field.rsplit(".", 1)[-1]  # "StandardLinearSolid.beta" -> "rheology.beta"
         raise ValidationError(f"{section}.{attr}", exc.value, exc.allowed) from exc
-    except (TypeError, ValueError) as exc:
+    except (TypeError, ValueError, OverflowError) as exc:
         message = str(exc).replace("\n", " ")
         named = [k for k in fields if re.search(rf"\b{re.escape(k)}\b", message)]
+        if isinstance(exc, OverflowError) and len(named) != 1:  # "int too large to convert"
+            named = [k for k, v in params.items() if _overflows(v)]
         if len(named) == 1:
             raise ValidationError(f"{section}.{named[0]}", params.get(named[0]), message) from exc
         raise ValidationError(section, params, message) from exc
@@ -590,6 +606,16 @@ def _fill(section: str, params: dict[str, Any], targets: dict[str, tuple[float, 
             raise _disagree(section, key, params[key], value, source, phys)
 
 
+def _amplitude(profile) -> float:
+    """Λ̃ of a built profile, for a physical load; a profile too large to evaluate is named."""
+    try:
+        return profile.amplitude
+    except (MemoryError, ValueError, OverflowError) as exc:
+        raise ValidationError("profile", kind_of("profile", profile),
+                              "a profile whose amplitude Λ̃ can be computed (it converts the "
+                              f"physical load): {type(exc).__name__}: {exc}") from exc
+
+
 def _section(data: Mapping[str, Any], name: str) -> dict[str, Any] | None:
     table = data.get(name)
     if table is None:
@@ -680,7 +706,7 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
         if key not in ("mean_pressure", "penetration"):
             raise ValidationError(f"load.{key}", load_table[key],
                                   "a key of [load]: 'mean_pressure' or 'penetration'")
-    targets = physical_targets("load", phys, nu, amplitude=lambda: profile.amplitude)
+    targets = physical_targets("load", phys, nu, amplitude=lambda: _amplitude(profile))
     _fill("load", load_table, targets, phys, None, "load")
     if not load_table:
         raise ValidationError("load", None, "exactly one of load.mean_pressure and "

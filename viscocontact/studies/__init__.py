@@ -11,10 +11,13 @@
                                continues an interrupted file
 :func:`resume`                 continue the study a file holds
 :func:`load_study`             the file as arrays (:class:`StudyData`: ``table``, ``band``,
-                               ``cycles``, ``metrics``, ``fields``)
+                               ``cycles``, ``metrics``, ``fields``, ``to_xarray``,
+                               ``to_dataframe``)
 :func:`confidence_band`        mean and Student-t band over realizations
 :func:`log_zetas`              log-spaced ζ
 :func:`solve_point`            the unit of work, a pure function of (scene dict, spec, edges)
+:class:`DaskScheduler`         where a Dask scheduler is (address, scheduler file or Dask's
+                               configuration), connect timeout and retries
 :class:`StudyFileError`        a foreign, damaged or mismatched study file
 =============================  ==================================================================
 
@@ -23,12 +26,13 @@ See ``docs/studies.md``.
 from .base import Chain, Study, log_zetas
 from .cycle import Cycle, CycleMetrics, cycle_metrics
 from .data import StudyData, load_study
+from .parallel import DaskScheduler
 from .point import COLUMNS, PointSpec, solve_point
 from .realizations import Band, confidence_band
 from .runner import resume, run
 from .storage import StudyFileError
 from .sweep import Sweep
 
-__all__ = ["Band", "COLUMNS", "Chain", "Cycle", "CycleMetrics", "PointSpec", "Study",
-           "StudyData", "StudyFileError", "Sweep", "confidence_band", "cycle_metrics",
+__all__ = ["Band", "COLUMNS", "Chain", "Cycle", "CycleMetrics", "DaskScheduler", "PointSpec",
+           "Study", "StudyData", "StudyFileError", "Sweep", "confidence_band", "cycle_metrics",
            "load_study", "log_zetas", "resume", "run", "solve_point"]

@@ -204,6 +204,13 @@ class Cycle(Study):
                     out.append(Chain(index=len(out), scene=scene, labels=labels, zetas=(zeta,)))
         return out
 
+    def grid(self) -> list[tuple[int, int, int]]:
+        """Where each cycle sits on the grid ``(zeta, gamma, seed)``: ``(iz, ig, iseed)`` per
+        chain, in :meth:`chains` order."""
+        gammas = range(len(self.gammas) if self.gammas is not None else 1)
+        seeds = range(len(self.seeds or (None,)))
+        return [(iz, ig, iseed) for iz in range(len(self.zetas)) for ig in gammas for iseed in seeds]
+
     def _state(self, records: Sequence[Mapping[str, Any]]):
         """(approach records, retract records, anchor, detached records, probes done)."""
         n_app = len(self.approach_targets())

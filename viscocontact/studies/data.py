@@ -1,6 +1,29 @@
-"""What a study file holds, as arrays: :func:`load_study` and :class:`StudyData`."""
+"""What a study file holds, as arrays: :func:`load_study` and :class:`StudyData`.
+
+Besides its own arrays (:meth:`StudyData.table`, :meth:`StudyData.band`,
+:meth:`StudyData.metrics`), a study converts to the tools of the Python data stack
+(``pip install 'viscocontact[xarray]'``; both are imported only when called):
+
+* :meth:`StudyData.to_dataframe` — a pandas DataFrame, one row per stored point, every column;
+* :meth:`StudyData.to_xarray` — an xarray Dataset on the study's grid: dimensions
+  ``(variant, load, seed, zeta)`` for a sweep, ``(zeta, gamma, seed, step)`` for cycles, where
+  ``step`` is the position along a cycle's approach-retraction path (cycles differ in length:
+  the retraction ends at detachment; missing steps are padded) and ``phase`` and ``target``
+  (Δ̃) say what each step is. The cycle metrics (:class:`~viscocontact.studies.CycleMetrics`)
+  are variables on ``(zeta, gamma, seed)``.
+
+In the Dataset a point not computed has ``row = -1``, NaN in the float variables (the counts
+``n_contacts``, ``iterations`` and ``function_evaluations`` are floats for this reason), False
+in the booleans and ``""`` in the strings. Points that did not converge keep their values, as
+in the file: ``ds.area.where(ds.converged)`` masks them (as :meth:`StudyData.table` does). The
+scene (TOML), the study parameters (JSON), the viscocontact version that wrote the file and the
+time it was created are attributes, so ``ds.to_netcdf(...)`` keeps them. The ``edges`` of a
+point, of variable length, are left out (``data.points["edges"][row]``).
+"""
 from __future__ import annotations
 
+import importlib
+import json
 import math
 from pathlib import Path
 from typing import Any
@@ -10,6 +33,7 @@ import numpy as np
 
 from ..errors import ValidationError
 from . import storage
+from .point import COLUMNS
 from .realizations import Band, confidence_band
 
 #: Result columns that :meth:`StudyData.table` arranges on the study's grid.
@@ -17,7 +41,40 @@ QUANTITIES = ("area", "mean_pressure", "penetration", "friction", "reduced_frict
               "n_contacts", "residual", "min_gap")
 
 
-@attrs.frozen(kw_only=True, eq=False)
+#: Integer columns that count something: floats in :meth:`StudyData.to_xarray` (NaN: no point).
+COUNTS = ("n_contacts", "iterations", "function_evaluations")
+
+#: What the variables of :meth:`StudyData.to_xarray` are (their ``description`` attribute).
+DESCRIPTIONS = {
+    "row": "row of the point in the study file (-1: not computed)",
+    "area": "contact area fraction Ã (eq. 4.17)",
+    "mean_pressure": "mean pressure p̃∞ (eq. 4.17)",
+    "penetration": "penetration Δ̃ = Δ/Λ",
+    "friction": "friction coefficient μ",
+    "reduced_friction": "μ/√m2",
+    "target": "the imposed value of the controlled load (p̃∞ or Δ̃)",
+    "gamma": "γ̃, dimensionless work of adhesion (0: adhesionless)",
+    "seconds": "wall time of the point (s)",
+}
+
+
+def _optional(module: str, what: str):
+    """Import ``module`` for ``StudyData.what``, or say which extra provides it."""
+    try:
+        return importlib.import_module(module)
+    except ImportError as exc:
+        raise ImportError(f"StudyData.{what}() needs {module}: pip install "
+                          f"'viscocontact[xarray]'", name=module) from exc
+
+
+def _short(values, fmt: str = "{:.3g}") -> str:
+    values = list(values)
+    if len(values) <= 4:
+        return ", ".join(fmt.format(v) for v in values)
+    return f"{len(values)} in [{fmt.format(min(values))}, {fmt.format(max(values))}]"
+
+
+@attrs.frozen(kw_only=True, eq=False, repr=False)
 class StudyData:
     """A loaded study file.
 
@@ -67,6 +124,27 @@ class StudyData:
 
     def __len__(self) -> int:
         return len(self.points["chain"])
+
+    def __repr__(self) -> str:
+        n, converged = len(self), int(np.count_nonzero(self.points["converged"]))
+        state = "complete" if self.complete else "interrupted, --resume continues it"
+        p = self.params
+        seeds = _short(p["seeds"], "{}") if p.get("seeds") else "none"
+        if self.kind == "sweep":
+            load = "p̃∞" if p["control"] == "mean_pressure" else "Δ̃"
+            try:
+                variants = ", ".join(self.study.variants)
+            except Exception:  # a repr never fails: the variants stored so far
+                variants = ", ".join(dict.fromkeys(self.points["variant"].tolist())) or "?"
+            grid = (f"  variants {variants}; loads {load} {_short(p['loads'])}; seeds {seeds}; "
+                    f"ζ {_short(p['zetas'])}")
+        else:
+            gammas = "the scene's" if p.get("gammas") is None else _short(p["gammas"])
+            grid = (f"  ζ {_short(p['zetas'])}; γ̃ {gammas}; seeds {seeds}; Δ̃ {p['start']:.3g} "
+                    f"to {p['max_penetration']:.3g} in steps of {p['step']:.3g}")
+        return (f"<StudyData {self.kind} {str(self.path)!r}: {n} points, {converged} "
+                f"converged ({state})\n{grid}\n  viscocontact {self.version}, created "
+                f"{self.created}>")
 
     def fields(self, row: int) -> dict[str, np.ndarray] | None:
         """``x``, ``pressure``, ``displacement``, ``gap`` of point ``row`` (None if not stored)."""
@@ -159,6 +237,106 @@ class StudyData:
                     out[n][iz, ig, iseed] = float(getattr(cyc["metrics"], n))
         return out | {"zeta": np.asarray(zetas), "gamma": np.asarray(gammas),
                       "seed": np.asarray(seeds)}
+
+
+    # ---- the Python data stack ----------------------------------------------------------------
+    def to_dataframe(self):
+        """The stored points as a pandas DataFrame: one row per point (index ``row``, the order
+        in which they finished), one column per :data:`~viscocontact.studies.COLUMNS` entry
+        (``edges``: arrays). ``df.attrs`` holds the scene, the parameters and the version.
+
+        Raises ImportError naming the ``xarray`` extra when pandas is not installed.
+        """
+        pd = _optional("pandas", "to_dataframe")
+        frame = pd.DataFrame({k: self.points[k] for k in COLUMNS},
+                             index=pd.RangeIndex(len(self), name="row"))
+        frame.attrs.update(self._attrs())
+        return frame
+
+    def to_xarray(self):
+        """The study as an xarray Dataset on its grid (see the module docstring).
+
+        Raises ImportError naming the ``xarray`` extra when xarray is not installed.
+        """
+        xr = _optional("xarray", "to_xarray")
+        study = self.study
+        chains = study.chains()
+        if self.kind == "sweep":
+            dims = ("variant", "load", "seed", "zeta")
+            coords = {"variant": list(study.variants), "load": list(study.loads),
+                      "seed": list(study.seeds or (-1,)), "zeta": list(study.zetas)}
+            where = [(*at[:3], at[3] + step) for at, step in self._steps(study.grid())]
+            if any(iz >= len(study.zetas) for *_, iz in where):
+                raise storage.StudyFileError(f"{self.path} is damaged: its points name ζ steps "
+                                             "beyond the study's ζ")
+            skip = set(dims) | {"control", "phase"}
+        else:
+            dims = ("zeta", "gamma", "seed", "step")
+            grid = study.grid()
+            gammas = {at[1]: c.labels["gamma"] for at, c in zip(grid, chains)}
+            steps = int(self.points["step"].max()) + 1 if len(self) else 0
+            coords = {"zeta": list(study.zetas), "gamma": [gammas[i] for i in sorted(gammas)],
+                      "seed": list(study.seeds or (-1,)), "step": np.arange(steps)}
+            where = [(*at, step) for at, step in self._steps(grid)]
+            skip = set(dims) | {"control", "load", "variant"}
+        shape = tuple(len(coords[d]) for d in dims)
+        index = tuple(np.array(i, dtype=np.intp).reshape(-1) for i in zip(*where)) if where \
+            else tuple(np.zeros(0, np.intp) for _ in dims)
+        variables = {"row": (dims, _on_grid(np.arange(len(self)), index, shape, -1))}
+        for column, kind in COLUMNS.items():
+            if column in skip or kind == "edges":
+                continue
+            values = self.points[column]
+            fill = {"float": np.nan, "int": -1, "bool": False, "str": ""}[kind]
+            if column in COUNTS:
+                values, fill = values.astype(float), np.nan
+            variables[column] = (dims, _on_grid(values, index, shape, fill))
+        if self.kind == "cycle":
+            variables.update(self._metrics_on(grid, shape[:3], dims[:3]))
+            by_gamma = {at[1]: c.labels["variant"] for at, c in zip(grid, chains)}
+            coords["variant"] = ("gamma", [by_gamma[i] for i in sorted(by_gamma)])
+        data = xr.Dataset(variables, coords=coords, attrs=self._attrs())
+        for name, text in DESCRIPTIONS.items():
+            if name in data:
+                data[name].attrs["description"] = text
+        return data
+
+    def _steps(self, grid):
+        """``(grid position of the point's chain, step)`` of every stored row."""
+        chain, step = self.points["chain"], self.points["step"]
+        if len(self) and not (0 <= chain.min() and chain.max() < len(grid) and step.min() >= 0):
+            raise storage.StudyFileError(f"{self.path} is damaged: its points name chains or "
+                                         "steps that its study does not have")
+        return [(grid[int(c)], int(k)) for c, k in zip(chain, step)]
+
+    def _metrics_on(self, grid, shape, dims) -> dict:
+        from .cycle import CycleMetrics
+
+        names = [f.name for f in attrs.fields(CycleMetrics)]
+        out = {n: np.full(shape, False if n == "detached" else np.nan) for n in names}
+        for at, cyc in zip(grid, self.cycles()):
+            if cyc["metrics"] is not None:
+                for n in names:
+                    out[n][at] = getattr(cyc["metrics"], n)
+        return {n: (dims, v) for n, v in out.items()}
+
+    def _attrs(self) -> dict:
+        """Attributes that survive netCDF (strings and numbers)."""
+        out = {"kind": self.kind, "scene": self.scene_toml, "study": json.dumps(self.params),
+               "viscocontact_version": self.version, "created": self.created,
+               "complete": int(self.complete), "source": str(self.path)}
+        if self.kind == "sweep":
+            out["control"] = self.params["control"]
+        return out
+
+
+def _on_grid(values: np.ndarray, index: tuple, shape: tuple, fill) -> np.ndarray:
+    """``values`` (one per stored row) placed at ``index`` on an array of ``shape``."""
+    values = np.asarray(values)
+    dtype = object if values.dtype.kind == "U" else values.dtype
+    out = np.full(shape, fill, dtype=dtype)
+    out[index] = values
+    return out.astype(str) if dtype is object else out
 
 
 def load_study(path) -> StudyData:

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import collections
 import json
+import threading
 import time
 from typing import Any, Mapping
 
@@ -162,21 +163,25 @@ def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
 
 
 # kernel tables depend only on profile, rheology, kernel and ζ: a small cache keyed by exactly
-# these inputs serves the many points of a cycle (fixed ζ) without any effect on the numbers
+# these inputs serves the many points of a cycle (fixed ζ) without any effect on the numbers;
+# the lock keeps it whole when threads share it (a Dask worker with several threads)
 _PREPARED: collections.OrderedDict = collections.OrderedDict()
 _PREPARED_SIZE = 4
+_PREPARED_LOCK = threading.Lock()
 
 
 def _prepared(scene: Mapping[str, Any], problem):
     key = json.dumps([scene.get(s) for s in ("profile", "rheology", "kernel", "poisson")]
                      + [scene["sliding"]["zeta"]], sort_keys=True, default=str)
-    if key in _PREPARED:
-        _PREPARED.move_to_end(key)
-        return _PREPARED[key]
+    with _PREPARED_LOCK:
+        if key in _PREPARED:
+            _PREPARED.move_to_end(key)
+            return _PREPARED[key]
     prepared = problem.prepare()
-    _PREPARED[key] = prepared
-    while len(_PREPARED) > _PREPARED_SIZE:
-        _PREPARED.popitem(last=False)
+    with _PREPARED_LOCK:
+        _PREPARED[key] = prepared
+        while len(_PREPARED) > _PREPARED_SIZE:
+            _PREPARED.popitem(last=False)
     return prepared
 
 

@@ -5,7 +5,7 @@ import sys
 from pathlib import Path
 from typing import TextIO
 
-from . import storage
+from . import guard, storage
 from .base import Study
 from .data import StudyData, load_study
 from .parallel import backend as make_backend
@@ -57,47 +57,50 @@ def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = 
                                    or not time_limit > 0 or time_limit == float("inf")):
         raise ValidationError("time_limit", time_limit, "a finite number of seconds > 0, or None")
     path = Path(path)
-    if path.exists() and resume:
-        header = storage.read_header(path)
-        storage.check_same_study(path, header, study)
-        storage.note_resume(path)
-        done = storage.records(storage.read_points(path))
-    elif path.exists() and not overwrite:
-        raise storage.StudyFileError(f"{path} exists: resume it (--resume) or replace it "
-                                     "(--force)")
-    else:
-        storage.create(path, study)
-        done = {}
+    storage.check_output(path)      # a folder, a missing folder: said as such
+    with guard.exclusive(path):     # one process at a time computes into a study file
+        if path.exists() and resume:
+            header = storage.read_header(path)
+            storage.check_same_study(path, header, study)
+            storage.note_resume(path)
+            done = storage.records(storage.read_points(path))
+        elif path.exists() and not overwrite:
+            raise storage.StudyFileError(f"{path} exists: resume it (--resume) or replace it "
+                                         "(--force)")
+        else:
+            storage.create(path, study)
+            done = {}
 
-    chains = study.chains()
-    records = {c.index: list(done.get(c.index, [])) for c in chains}
-    bar = Progress(study.kind, sum(study.expected_points(c, records[c.index]) for c in chains),
-                   done=sum(len(r) for r in records.values()), stream=progress)
-    pool = make_backend(workers, scheduler)
-    pending = {}
-    try:
-        def submit(chain):
-            nxt = study.next_point(chain, records[chain.index])
-            if nxt is not None:
-                pending[pool.submit(solve_point, *nxt, time_limit)] = chain
+        chains = study.chains()
+        records = {c.index: list(done.get(c.index, [])) for c in chains}
+        bar = Progress(study.kind,
+                       sum(study.expected_points(c, records[c.index]) for c in chains),
+                       done=sum(len(r) for r in records.values()), stream=progress)
+        pool = make_backend(workers, scheduler)
+        pending = {}
+        try:
+            def submit(chain):
+                nxt = study.next_point(chain, records[chain.index])
+                if nxt is not None:
+                    pending[pool.submit(solve_point, *nxt, time_limit)] = chain
 
-        for chain in chains:
-            submit(chain)
-        while pending:
-            for handle in pool.wait(list(pending)):
-                chain = pending.pop(handle)
-                record = handle.result()
-                storage.append(path, record)
-                record.pop("fields", None)
-                records[chain.index].append(record)
-                total = sum(study.expected_points(c, records[c.index]) for c in chains)
-                bar.update(total=total, note=_note(record))
+            for chain in chains:
                 submit(chain)
-    finally:
-        pool.close()
-        bar.close()
-    storage.set_complete(path, True)
-    return load_study(path)
+            while pending:
+                for handle in pool.wait(list(pending)):
+                    chain = pending.pop(handle)
+                    record = handle.result()
+                    storage.append(path, record)
+                    record.pop("fields", None)
+                    records[chain.index].append(record)
+                    total = sum(study.expected_points(c, records[c.index]) for c in chains)
+                    bar.update(total=total, note=_note(record))
+                    submit(chain)
+        finally:
+            pool.close()
+            bar.close()
+        storage.set_complete(path, True)
+        return load_study(path)
 
 
 def _note(record) -> str:

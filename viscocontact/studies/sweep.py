@@ -149,22 +149,38 @@ class Sweep(Study):
     def from_params(cls, scene, params: Mapping[str, Any]) -> "Sweep":
         return cls(scene=scene, **params)
 
+    def _layout(self):
+        """``(variant, load, seed, zetas, (iv, il, iseed, iz0))`` of every chain, in order."""
+        groups = ([(0, self.zetas)] if self.continuation
+                  else [(iz, (z,)) for iz, z in enumerate(self.zetas)])
+        for iv, variant in enumerate(self.variants):
+            for il, load in enumerate(self.loads):
+                for iseed, seed in enumerate(self.seeds or (None,)):
+                    for iz0, zetas in groups:
+                        yield variant, load, seed, tuple(zetas), (iv, il, iseed, iz0)
+
     def chains(self) -> list[Chain]:
         base = self.scene.to_dict()
         out: list[Chain] = []
-        for variant in self.variants:
-            adhesion = {"kind": "none"} if variant == ADHESIONLESS and self.scene.adhesive else None
-            for load in self.loads:
-                for seed in self.seeds or (None,):
-                    scene = scene_variant(base, control=self.control, value=load, seed=seed,
-                                          adhesion=adhesion)
-                    labels = {"variant": variant, "seed": -1 if seed is None else seed,
-                              "gamma": adhesion_gamma(scene["adhesion"]), "load": load}
-                    groups = [self.zetas] if self.continuation else [(z,) for z in self.zetas]
-                    for zetas in groups:
-                        out.append(Chain(index=len(out), scene=scene, labels=labels,
-                                         zetas=tuple(zetas)))
+        scenes: dict = {}
+        for variant, load, seed, zetas, _ in self._layout():
+            if (variant, load, seed) not in scenes:
+                adhesion = ({"kind": "none"} if variant == ADHESIONLESS and self.scene.adhesive
+                            else None)
+                scene = scene_variant(base, control=self.control, value=load, seed=seed,
+                                      adhesion=adhesion)
+                labels = {"variant": variant, "seed": -1 if seed is None else seed,
+                          "gamma": adhesion_gamma(scene["adhesion"]), "load": load}
+                scenes[variant, load, seed] = scene, labels
+            scene, labels = scenes[variant, load, seed]
+            out.append(Chain(index=len(out), scene=scene, labels=labels, zetas=zetas))
         return out
+
+    def grid(self) -> list[tuple[int, int, int, int]]:
+        """Where each chain sits on the grid ``(variant, load, seed, zeta)`` of
+        :meth:`StudyData.axes`: ``(iv, il, iseed, iz0)`` per chain (in :meth:`chains` order),
+        its point ``step`` at ζ index ``iz0 + step``."""
+        return [position for *_, position in self._layout()]
 
     def next_point(self, chain: Chain, records: Sequence[Mapping[str, Any]]):
         k = len(records)
