@@ -95,3 +95,8 @@ def warn_user(message: str, category: type[Warning]) -> None:
     while frame is not None and _internal(frame):
         frame, level = frame.f_back, level + 1
     warnings.warn(message, category, stacklevel=level if frame is not None else 2)
+
+
+class StudyFileError(ViscoContactError):
+    """A study file that cannot be used: not HDF5, damaged, foreign, or of another study; an output
+    path that cannot hold one; a file another process is computing into; a failed write."""

@@ -74,7 +74,7 @@ def exclusive(path) -> Iterator[None]:
         Another process holds the lock (it is computing into the same file), or the lock file
         cannot be created.
     """
-    from .storage import StudyFileError
+    from ..errors import StudyFileError
 
     lock = lock_path(path)
     while True:

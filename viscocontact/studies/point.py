@@ -108,7 +108,7 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     dict
         One value per :data:`COLUMNS` key, plus ``"fields"`` (a dict of arrays or None).
     """
-    from .parallel import single_blas_thread
+    from .._blas import single_blas_thread
 
     from ..deadline import deadline
 

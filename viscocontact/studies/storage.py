@@ -44,7 +44,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from ..errors import ValidationError, ViscoContactError
+from ..errors import StudyFileError, ValidationError
 from .guard import signals_deferred
 from .point import COLUMNS
 
@@ -59,9 +59,6 @@ WRITE_WAIT = 60.0
 READ_WAIT = 5.0
 
 
-class StudyFileError(ViscoContactError):
-    """A study file that cannot be used: not HDF5, damaged, foreign, or of another study; an output
-    path that cannot hold one; a file another process is computing into; a failed write."""
 
 
 def _h5py():

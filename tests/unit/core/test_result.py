@@ -38,11 +38,12 @@ def test_no_contact_json_is_strict():
 
 
 def test_finite_json_round_trips_exactly():
-    r = result()
+    r = result(extras={"method": "bem", "error_estimate": 2e-4})
     data = json.loads(r.to_json(), parse_constant=_reject)
     assert data["reduced_friction"] == 0.4003 and type(r.to_dict()["reduced_friction"]) is float
     assert data["edges"] == [[-0.0667, 0.5235]]
     assert data == r.to_dict()
+    assert data["method"] == "bem" and data["error_estimate"] == 2e-4
     with_fields = json.loads(r.to_json(with_fields=True), parse_constant=_reject)
     assert len(with_fields["fields"]["x"]) == 4000
 
