@@ -36,7 +36,13 @@ COLUMNS: dict[str, str] = {
     "reduced_friction": "float", "n_contacts": "int", "full_contact": "bool",
     "residual": "float", "iterations": "int", "function_evaluations": "int",
     "edge_perturbation": "float", "min_gap": "float", "seconds": "float", "edges": "edges",
+    # the solution method that computed the point and its error estimate
+    "method": "str", "error_estimate": "float",
 }
+
+#: Columns added after the first study-file format, with the value a file written before them
+#: reads as (``""``: the method was not recorded; it was the BEM).
+LATER_COLUMNS: dict[str, Any] = {"method": "", "error_estimate": float("nan")}
 
 #: Columns that depend on the machine's speed, not on the numerics (left out of comparisons).
 TIMING_COLUMNS = ("seconds",)
@@ -140,6 +146,7 @@ def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
         "started_from": spec.started_from, "variant": "", "seed": -1, "gamma": np.nan,
         "load": np.nan, "zeta": float(scene["sliding"]["zeta"]), "control": control,
         "target": float(load[control]), "status": ERROR, "converged": False, "message": "",
+        "method": "",
         "n_contacts": 0, "full_contact": False, "iterations": 0, "function_evaluations": 0,
         "edges": np.zeros(0), "fields": None}
     for key, kind in COLUMNS.items():

@@ -46,7 +46,7 @@ import numpy as np
 
 from ..errors import StudyFileError, ValidationError
 from .guard import signals_deferred
-from .point import COLUMNS
+from .point import COLUMNS, LATER_COLUMNS
 
 FORMAT = "viscocontact.study"
 FORMAT_VERSION = 1
@@ -155,6 +155,8 @@ def _check_header(f, path: Path) -> None:
     if count < 0:
         raise StudyFileError(f"{path} is damaged: /points has no 'count' attribute")
     for column in COLUMNS:
+        if column not in f["points"] and column in LATER_COLUMNS:
+            continue                          # a file written before the column existed
         if column not in f["points"]:
             raise StudyFileError(f"{path} is damaged: /points/{column} is missing")
         if f["points"][column].shape[0] < count:
@@ -240,6 +242,9 @@ def rewrite(path) -> None:
             for column, kind in COLUMNS.items():
                 if not count:
                     continue
+                if column not in src["points"]:   # a file written before the column existed
+                    points[column][:] = LATER_COLUMNS[column]
+                    continue
                 values = src["points"][column][:count]
                 if kind == "edges":  # row by row: h5py makes equal-length rows one 2-D array
                     for i, value in enumerate(values):
@@ -277,6 +282,13 @@ def append(path, record: Mapping[str, Any]) -> int:
             points = f["points"]
             row = int(points.attrs["count"])
             for column, kind in COLUMNS.items():
+                if column not in points:       # a file written before the column existed
+                    ds = points.create_dataset(column, shape=(row,), maxshape=(None,),
+                                               chunks=(256,), dtype=_dtype(kind))
+                    if row:
+                        ds[:] = LATER_COLUMNS[column]
+                    if ROW in points:
+                        ds.dims[0].attach_scale(points[ROW])
                 ds = points[column]
                 if ds.shape[0] < row + 1:
                     ds.resize((row + 1,))
@@ -377,6 +389,10 @@ def read_points(path) -> dict[str, np.ndarray]:
         n = int(points.attrs["count"])
         out: dict[str, np.ndarray] = {}
         for column, kind in COLUMNS.items():
+            if column not in points:           # a file written before the column existed
+                out[column] = np.full(n, LATER_COLUMNS[column],
+                                      dtype=str if kind == "str" else _dtype(kind))
+                continue
             ds = points[column]
             if kind == "str":
                 out[column] = np.array(ds.asstr()[:n] if n else [], dtype=str)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from viscocontact.studies import Sweep, load_study, run, storage
-from viscocontact.studies.point import COLUMNS
+from viscocontact.studies.point import COLUMNS, LATER_COLUMNS
 
 from .test_data import record
 
@@ -18,7 +18,8 @@ def sweep(adhesionless, mesh):
 
 
 def write_010(path, sweep, records):
-    """A study file laid out as viscocontact 0.1.0 wrote it: no dimension scales."""
+    """A study file laid out as viscocontact 0.1.0 wrote it: no dimension scales, and none of
+    the columns added since (the method and its error estimate)."""
     string = h5py.string_dtype("utf-8")
     kinds = {"int": np.int64, "float": np.float64, "bool": np.bool_, "str": string,
              "edges": h5py.vlen_dtype(np.float64)}
@@ -31,6 +32,8 @@ def write_010(path, sweep, records):
         f.create_dataset("seeds", data=np.zeros(0, np.int64))
         points = f.create_group("points")
         for column, kind in COLUMNS.items():
+            if column in LATER_COLUMNS:
+                continue
             points.create_dataset(column, shape=(len(records),), maxshape=(None,), chunks=(256,),
                                   dtype=kinds[kind])
             for i, rec in enumerate(records):
@@ -85,9 +88,15 @@ def test_a_file_of_010_is_read_appended_and_resumed(tmp_path, sweep, mesh, ident
     assert len(data) == 1 and data.version == "0.1.0" and data.study == sweep
     assert np.array_equal(data.points["edges"][0], whole.points["edges"][0])
 
+    assert data.points["method"].tolist() == [""]          # not recorded by 0.1.0
+    assert np.isnan(data.points["error_estimate"]).all()
+
     resumed = run(sweep, old, resume=True, progress=None)      # rewritten in the new layout
     assert resumed.complete and len(resumed) == 2
-    identical(resumed.points, whole.points)
+    later = {k: v for k, v in resumed.points.items() if k not in LATER_COLUMNS}
+    identical(later, {k: v for k, v in whole.points.items() if k not in LATER_COLUMNS})
+    assert resumed.points["method"][0] == "" and resumed.points["method"][1] == whole.points[
+        "method"][1] != ""
     with h5py.File(old, "r") as f:
         assert f["points/row"].is_scale and f.attrs["viscocontact_version"] == "0.1.0"
         assert f.attrs["created"] == "2026-01-01T00:00:00+00:00"
@@ -96,8 +105,12 @@ def test_a_file_of_010_is_read_appended_and_resumed(tmp_path, sweep, mesh, ident
 def test_append_to_a_file_of_010_keeps_its_layout(tmp_path, sweep):
     old = tmp_path / "old.h5"
     write_010(old, sweep, [record(0, 0, zeta=0.3)])
-    storage.append(old, record(0, 1, zeta=3.0, area=2.0))
-    assert load_study(old).points["area"].tolist() == [0.5, 2.0]
+    storage.append(old, dict(record(0, 1, zeta=3.0, area=2.0), method="spectral",
+                             error_estimate=3e-4))
+    points = load_study(old).points
+    assert points["area"].tolist() == [0.5, 2.0]
+    assert points["method"].tolist() == ["", "spectral"]
+    assert np.isnan(points["error_estimate"][0]) and points["error_estimate"][1] == 3e-4
 
 
 def test_rewrite_keeps_the_counted_points_and_drops_the_rest(tmp_path, sweep):
