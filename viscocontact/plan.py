@@ -93,8 +93,11 @@ def solve_plan(problem, prepared) -> SolvePlan:
     """The :class:`SolvePlan` of ``problem`` with its prepared tables: the kernel and geometry,
     then what the problem's :class:`~viscocontact.methods.base.SolutionMethod` computes."""
     kernel = prepared.kernel
-    steps = [_kernel_step(kernel), *_geometry_steps(problem, kernel),
-             *problem.method.plan_steps(problem, prepared),
+    method = list(problem.method.plan_steps(problem, prepared))
+    if not method or method[0].stage != "method":
+        method.insert(0, PlanStep(stage="method", choice=problem.method.name,
+                                  reason="as asked (the scene's [method] or the problem's method)"))
+    steps = [_kernel_step(kernel), *_geometry_steps(problem, kernel), *method,
              PlanStep(stage="fields", choice="pressure, displacement and gap only when asked",
                       reason="fields=True / --fields")]
     return SolvePlan(steps=tuple(steps))

@@ -26,6 +26,7 @@ follow the load upwards, each continued from the previous contact set.
 from __future__ import annotations
 
 import argparse
+import collections
 import math
 import multiprocessing
 import os
@@ -64,6 +65,9 @@ class Plan:
     rough_seeds: tuple = tuple(range(20))
     rough_loads: tuple = (0.01, 0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4)
     rough_elements: int = 32
+    #: relative accuracy asked of the planned method (``[method] kind = "auto"``) on the rough
+    #: adhesionless solves; the accuracy check solves seeds ``mesh_check_seeds`` again at a tenth
+    rough_tolerance: float = 1e-3
     mesh_check_seeds: tuple = (0, 1)
     small_load: float = 0.1
     friction_loads: tuple = (0.1, 0.3)
@@ -118,14 +122,14 @@ def _row(result, started) -> dict:
                 penetration=result.penetration, friction=result.friction,
                 reduced_friction=result.reduced_friction, n_contacts=result.n_contacts,
                 converged=bool(result.converged), min_gap=result.min_gap,
-                seconds=time.perf_counter() - started, error=None)
+                seconds=time.perf_counter() - started, error=None, method=result.method)
 
 
 def _failure(error, started) -> dict:
     return dict(area=np.nan, mean_pressure=np.nan, penetration=np.nan, friction=np.nan,
                 reduced_friction=np.nan, n_contacts=0, converged=False, min_gap=np.nan,
                 seconds=time.perf_counter() - started,
-                error=f"{type(error).__name__}: {error}".splitlines()[0][:200])
+                error=f"{type(error).__name__}: {error}".splitlines()[0][:200], method="")
 
 
 def _guarded(problem, limit, initial=None):
@@ -143,7 +147,9 @@ def _guarded(problem, limit, initial=None):
 
 
 def _problem(profile, *, rheology=None, solver=None, gamma=None, edge_perturbation=None,
-             discretization=None, **kw):
+             discretization=None, tolerance=None, **kw):
+    """A problem of the report; ``tolerance``: solved by the planned method (``auto``) at that
+    accuracy, as a scene without ``[method]`` is; otherwise by the BEM."""
     from ..adhesion import EnergyBalance
     from ..problem import ContactProblem, Discretization
     from ..rheology import Elastic
@@ -155,6 +161,10 @@ def _problem(profile, *, rheology=None, solver=None, gamma=None, edge_perturbati
         if edge_perturbation is not None:
             adh["edge_perturbation"] = edge_perturbation
         extra["adhesion"] = EnergyBalance(**adh)
+    if tolerance is not None:
+        from ..methods.auto import Auto
+
+        extra["method"] = Auto(tolerance=tolerance)
     return ContactProblem(profile=profile, rheology=rheology or Elastic(),
                           solver=solver or Newton(),
                           discretization=discretization or Discretization(), **extra, **kw)
@@ -197,29 +207,33 @@ def _path(base, field, values, limit) -> list:
     return rows
 
 
-def task_rough_load_path(*, seed, loads, elements, limit) -> list:
-    """Elastic adhesionless rough contact along increasing load (bisection)."""
+def task_rough_load_path(*, seed, loads, elements, limit, tolerance=None) -> list:
+    """Elastic adhesionless rough contact along increasing load (the planned method at
+    ``tolerance``; the BEM with bisection when it runs)."""
     from ..problem import Discretization
     from ..solvers import Bisection
 
     base = _problem(_profile(seed), solver=Bisection(), mean_pressure=loads[0],
-                    discretization=Discretization(elements=elements))
+                    discretization=Discretization(elements=elements), tolerance=tolerance)
     return _path(base, "mean_pressure", loads, limit)
 
 
-def task_rough_zeta_path(*, seed, zetas, mean_pressure, elements, limit) -> list:
-    """Adhesionless rough contact on the standard linear solid along ζ (bisection)."""
+def task_rough_zeta_path(*, seed, zetas, mean_pressure, elements, limit, tolerance=None) -> list:
+    """Adhesionless rough contact on the standard linear solid along ζ (the planned method)."""
     from ..problem import Discretization
     from ..rheology import StandardLinearSolid
     from ..solvers import Bisection
 
     base = _problem(_profile(seed), rheology=StandardLinearSolid(beta=BETA), solver=Bisection(),
-                    mean_pressure=mean_pressure, discretization=Discretization(elements=elements))
+                    mean_pressure=mean_pressure, discretization=Discretization(elements=elements),
+                    tolerance=tolerance)
     return _path(base, "zeta", zetas, limit)
 
 
-def task_rough(*, seed, mean_pressure, elements, limit, zeta=0.0, viscoelastic=False) -> dict:
-    """One rough adhesionless solve from first touch, mesh of eq. 4.22 alone (limit cases)."""
+def task_rough(*, seed, mean_pressure, elements, limit, zeta=0.0, viscoelastic=False,
+               tolerance=None) -> dict:
+    """One rough adhesionless solve (the planned method; the BEM from first touch with the mesh
+    of eq. 4.22 alone when it runs), for the limit cases."""
     from ..problem import Discretization
     from ..rheology import StandardLinearSolid
     from ..solvers import Bisection
@@ -228,7 +242,8 @@ def task_rough(*, seed, mean_pressure, elements, limit, zeta=0.0, viscoelastic=F
     return _guarded(_problem(_profile(seed), rheology=rheology, solver=Bisection(),
                              mean_pressure=mean_pressure, zeta=zeta,
                              discretization=Discretization(elements=elements,
-                                                           edge_resolution=None)), limit)[1]
+                                                           edge_resolution=None),
+                             tolerance=tolerance), limit)[1]
 
 
 class _Serial:
@@ -264,13 +279,14 @@ def _submit_all(plan: Plan, pool) -> dict:
     lam2 = SINUSOID_AMPLITUDE**2
     for s in plan.rough_friction_seeds:
         submit(("rough_zeta", s), task_rough_zeta_path, seed=s, zetas=plan.rough_friction_zetas,
-               mean_pressure=plan.rough_friction_load, elements=plan.rough_elements)
+               mean_pressure=plan.rough_friction_load, elements=plan.rough_elements,
+               tolerance=plan.rough_tolerance)
     for s in plan.mesh_check_seeds:
         submit(("rough_fine", s), task_rough_load_path, seed=s, loads=plan.rough_loads,
-               elements=2 * plan.rough_elements)
+               elements=2 * plan.rough_elements, tolerance=plan.rough_tolerance / 10)
     for s in plan.rough_seeds:
         submit(("rough", s), task_rough_load_path, seed=s, loads=plan.rough_loads,
-               elements=plan.rough_elements)
+               elements=plan.rough_elements, tolerance=plan.rough_tolerance)
     if plan.mesh_finite_advance:
         for n in plan.mesh_elements[::-1]:
             submit(("mesh_johnson_dx", n), task_sinusoid, mean_pressure=0.0, elements=n,
@@ -279,9 +295,11 @@ def _submit_all(plan: Plan, pool) -> dict:
         submit(("johnson", g, p), task_sinusoid, mean_pressure=p, gamma=g * lam2, **wavy)
     for z in plan.rough_limit_zetas:
         submit(("rough_limit", z), task_rough, seed=0, mean_pressure=plan.rough_limit_load,
-               elements=plan.rough_elements, zeta=z, viscoelastic=True)
+               elements=plan.rough_elements, zeta=z, viscoelastic=True,
+               tolerance=plan.rough_tolerance)
         submit(("rough_limit_ref", z), task_rough, seed=0, elements=plan.rough_elements,
-               mean_pressure=plan.rough_limit_load / (BETA if z > 1 else 1.0))
+               mean_pressure=plan.rough_limit_load / (BETA if z > 1 else 1.0),
+               tolerance=plan.rough_tolerance)
     for n in plan.mesh_elements[::-1]:
         submit(("mesh_westergaard", n), task_sinusoid, mean_pressure=0.3, elements=n)
         submit(("mesh_johnson", n), task_sinusoid, mean_pressure=0.0, elements=n,
@@ -475,7 +493,9 @@ def rough_area(plan, r):
     mesh = [abs(w["fine"] / w["bem"] - 1) for w in fine]
     mesh_ratio = [abs(w["bem"] / w["fine"] - 1) for w in fine]   # Persson/BEM changes by this
     n_fine = sum(len(r["rough_fine", s]) for s in plan.mesh_check_seeds)
-    return dict(rows=rows, per_load=per_load, pooled=pooled, pooled_all=pooled_all,
+    methods = collections.Counter(x.get("method") or "failed" for s in plan.rough_seeds
+                                  for x in r["rough", s])
+    return dict(rows=rows, methods=methods, per_load=per_load, pooled=pooled, pooled_all=pooled_all,
                 seed_means=_stats(seed_means), kappa=kappa,
                 kappa_persson=math.sqrt(8 / math.pi), kappa_bgt=math.sqrt(math.pi),
                 failed=[w for w in rows if not w["converged"]], theories=theories,
@@ -522,7 +542,7 @@ def friction(plan, r):
             pts.append(dict(seed=s, zeta=z, area=x["area"], n_contacts=x["n_contacts"],
                             bem=x["reduced_friction"], converged=x["converged"],
                             min_gap=x["min_gap"], seconds=x["seconds"], error=x["error"],
-                            retried=x.get("retried", False),
+                            retried=x.get("retried", False), method=x.get("method", ""),
                             persson=float(pf.reduced_coefficient(z, plan.rough_friction_load)),
                             persson_area=2 * math.pi * float(
                                 pf.area_fraction(z, plan.rough_friction_load))))
@@ -673,14 +693,14 @@ def _md_rough(ra, plan) -> list[str]:
     L = [SECTIONS[2], "",
          f"`SelfAffineProfile(hurst={HURST}, scales={SCALES}, rms={RMS}, seed=s)`, seeds "
          f"{seeds[0]}-{seeds[-1]} ({len(seeds)} realisations), elastic, adhesionless, "
-         f"{plan.rough_elements} elements per contact, bisection; the loads "
+         f"{_methods_text(ra['methods'], plan)}; the loads "
          f"p̃∞ = {', '.join(fmt(p) for p in plan.rough_loads)} are followed upwards, each "
          "continued from the previous contact set. The theories are evaluated at the same p̃∞ and "
          "profile (`viscocontact.theories`): Persson's area for line roughness "
          "`erf(p̃Λ̃/√(2m2))`, eq. 3.45 as printed (the isotropic-surface form), and the 3D "
          "multi-asperity models with the profile read as a cross-section of an isotropic surface "
-         "(`docs/theories.md`). Ratios are theory/BEM per seed and load: mean ± standard "
-         "deviation over seeds (min–max).", ""]
+         "(`docs/theories.md`). Ratios are theory/computed per seed and load: mean ± standard "
+         "deviation over seeds (min–max); \"computed\" is this package's solution.", ""]
     if ra["failed"]:
         L += [f"**{len(ra['failed'])} of {len(ra['rows'])} solves failed or interpenetrated and "
               "are left out:** "
@@ -697,38 +717,49 @@ def _md_rough(ra, plan) -> list[str]:
     rows = [(fmt(d["p"]), d["n"], _spread(d["bem"]), fmt(d["contacts"]["mean"], 2),
              *[_spread(d[k]) for k in th]) for d in ra["per_load"]]
     L += ["<!-- table: rough-area -->"]
-    L += _table(("p̃∞", "seeds", "A/A0 (BEM)", "contacts", *[f"{v} / BEM" for v in th.values()]),
+    L += _table(("p̃∞", "seeds", "A/A0 (computed)", "contacts",
+                 *[f"{v} / computed" for v in th.values()]),
                 rows)
     small_area = max(d["bem"]["hi"] for d in ra["per_load"] if d["p"] <= plan.small_load)
     L += [f"**Thesis §3.4 check.** The thesis quotes A_Persson/A_BEM ≈ {THESIS_PERSSON_RATIO} "
           f"for 1D roughness (Carbone et al. 2009). Measured at p̃∞ ≤ {fmt(plan.small_load)} "
-          f"(A/A0 ≤ {fmt(small_area, 2)}), {pp['n']} solves: A_Persson/A_BEM = {_spread(pp)}, "
-          f"i.e. BEM/Persson = {fmt(1 / pp['mean'], 3)}; the per-seed mean ratios spread as "
+          f"(A/A0 ≤ {fmt(small_area, 2)}), {pp['n']} solves: A_Persson/A_computed = {_spread(pp)}, "
+          f"i.e. computed/Persson = {fmt(1 / pp['mean'], 3)}; the per-seed mean ratios spread as "
           f"{_spread(ra['seed_means'])}. Over all loads: {_spread(ra['pooled_all']['persson'])}. "
           f"Eq. 3.45 applied literally to the profile gives {_spread(iso)} at "
           f"p̃∞ ≤ {fmt(plan.small_load)}. So Persson's line form gives {fmt(pp['mean'], 3)} of "
-          f"the BEM area, {_compare(pp['mean'], THESIS_PERSSON_RATIO)} the thesis's "
+          f"the computed area, {_compare(pp['mean'], THESIS_PERSSON_RATIO)} the thesis's "
           f"{THESIS_PERSSON_RATIO}, and eq. 3.45 as printed {fmt(iso['mean'], 3)}, "
           f"{_compare(iso['mean'], THESIS_PERSSON_RATIO)} it.", "",
           f"**Small-load slope.** Fitting A/A0 = κ·p̄/(E*√m2) through the origin at p̃∞ ≤ 0.05 "
-          f"gives κ_BEM = {fmt(ra['kappa'], 3)}, against Persson's √(8/π) = "
+          f"gives κ_computed = {fmt(ra['kappa'], 3)}, against Persson's √(8/π) = "
           f"{fmt(ra['kappa_persson'], 4)} (line form) and the asperity models' asymptotic "
           f"√π = {fmt(ra['kappa_bgt'], 4)} (BGT, height-curvature).", ""]
     if ra["mesh_change"] is not None:
-        L += [f"**Mesh.** Seeds {', '.join(str(s) for s in plan.mesh_check_seeds)} solved again "
-              f"with {2 * plan.rough_elements} elements per contact ({ra['mesh_points']} of "
+        L += [f"**Accuracy.** Seeds {', '.join(str(s) for s in plan.mesh_check_seeds)} solved "
+              f"again at tolerance {fmt(plan.rough_tolerance / 10)} ({ra['mesh_points']} of "
               f"{ra['mesh_total']} solves converged): the largest relative change of A/A0 is "
-              f"{fmt(ra['mesh_change'])}, and of the Persson/BEM ratio "
+              f"{fmt(ra['mesh_change'])}, and of the Persson/computed ratio "
               f"{fmt(ra['mesh_ratio_change'])}, against a spread between realisations of "
               f"{fmt(pp['sd'] / pp['mean'])} (relative standard deviation).", ""]
     L += ["![rough area](figures/validation_rough_area.png)", ""]
     return L
 
 
+def _methods_text(methods, plan) -> str:
+    """Which method computed the rough solves: the planned one and the counts of each."""
+    counts = ", ".join(f"{n} by {m}" for m, n in sorted(methods.items()))
+    return (f"solved by the planned method (`[method] kind = \"auto\"`, tolerance "
+            f"{fmt(plan.rough_tolerance)}: the spectral method for adhesionless scenes, the BEM "
+            f"with {plan.rough_elements} elements per contact and bisection where it takes over; "
+            f"{counts})")
+
+
 def _md_friction(fr, plan) -> list[str]:
     L = [SECTIONS[3], "",
-         f"Adhesionless, `StandardLinearSolid(beta={fmt(BETA)})`. BEM (default mesh, Newton for "
-         "the sinusoid; bisection for the rough profile) against Persson's mean-field friction for "
+         f"Adhesionless, `StandardLinearSolid(beta={fmt(BETA)})`. The BEM (default mesh, Newton) "
+         "for the sinusoid, the planned method (`auto`: the spectral method) for the rough "
+         "profile, against Persson's mean-field friction for "
          "the same profile and rheology (`PerssonFriction`, contact correction S = 1; the "
          "figure also shows S = γ + (1-γ)P² with γ = ½). Friction is the reduced coefficient "
          "μ/√m2 (eq. 4.59).", "",
@@ -758,9 +789,11 @@ def _md_friction(fr, plan) -> list[str]:
           + "".join(f"; ζ = {fmt(q['zeta'])}: {q['error'] or 'not converged'}"
                     for q in points if not q["converged"]) + ".", "",
           f"**Rough profile**, seeds {', '.join(str(w['seed']) for w in fr['rough'])}, "
-          f"p̃∞ = {fmt(plan.rough_friction_load)}, {plan.rough_elements} elements per contact "
-          "(`Discretization(elements=...)`, otherwise default, so the memory length gets its edge "
-          "zones), ζ followed downwards from the stiff end, each continued from the last converged "
+          f"p̃∞ = {fmt(plan.rough_friction_load)}, the planned method at tolerance "
+          f"{fmt(plan.rough_tolerance)} (methods: "
+          + ", ".join(f"{n} {m}" for m, n in sorted(collections.Counter(
+              q.get("method") or "failed" for w in fr["rough"] for q in w["points"]).items()))
+          + "), ζ followed downwards from the stiff end, each continued from the last converged "
           "contact set. Times are per solve.", ""]
     rows = []
     for w in fr["rough"]:
@@ -775,13 +808,13 @@ def _md_friction(fr, plan) -> list[str]:
                          fmt(q["persson_area"] / q["area"], 3) if ok else "—",
                          f"{q['seconds']:.1f} s"))
     L += ["<!-- table: rough-friction -->"]
-    L += _table(("seed", "ζ", "converged", "Ã (BEM)", "contacts", "μ/√m2 (BEM)",
-                 "μ/√m2 (Persson)", "Persson/BEM", "area Persson/BEM", "time"), rows)
+    L += _table(("seed", "ζ", "converged", "Ã (computed)", "contacts", "μ/√m2 (computed)",
+                 "μ/√m2 (Persson)", "Persson/computed", "area Persson/computed", "time"), rows)
     wv = fr["wavy"][0]
     ok = [q for q in wv["points"] if q["converged"] and q["bem"] > 0]
     lo, hi = ok[0], ok[-1]
-    L += [f"Persson/BEM friction on the rough profile: {_spread(fr['rough_ratio'])}; contact "
-          f"area Persson/BEM {_spread(fr['rough_area_ratio'])}. On the sinusoid at "
+    L += [f"Persson/computed friction on the rough profile: {_spread(fr['rough_ratio'])}; "
+          f"contact area Persson/computed {_spread(fr['rough_area_ratio'])}. On the sinusoid at "
           f"p̃∞ = {fmt(wv['p'])} the friction ratio runs from {fmt(wv['ratio']['lo'], 3)} to "
           f"{fmt(wv['ratio']['hi'], 3)}: {fmt(lo['persson'] / lo['bem'], 3)} at "
           f"ζ = {fmt(lo['zeta'])}, {fmt(hi['persson'] / hi['bem'], 3)} at ζ = {fmt(hi['zeta'])}, "

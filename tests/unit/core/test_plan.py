@@ -122,9 +122,18 @@ def test_cli_explain_prints_the_plan_without_solving(tmp_path, capsys):
                      '[sliding]\nzeta = 1.0\n', encoding="utf-8")
     assert main(["solve", str(scene), "--explain"]) == 0
     text = capsys.readouterr().out
-    for stage in ("kernel", "mean displacement", "layer series", "mesh", "edges", "fields"):
+    for stage in ("kernel", "mean displacement", "layer series", "method", "grid", "fields"):
         assert stage in text
+    assert "spectral" in text and "adhesionless" in text       # the plan's method and why
     assert "area" not in text                                   # no solve, no result
+    adhesive = tmp_path / "a.toml"
+    adhesive.write_text(scene.read_text(encoding="utf-8")
+                        + '[adhesion]\nkind = "energy-balance"\ngamma = 1e-4\n', encoding="utf-8")
+    assert main(["solve", str(adhesive), "--explain"]) == 0
+    text = capsys.readouterr().out
+    for stage in ("method", "mesh", "edges", "path", "solver"):
+        assert stage in text
+    assert "bem" in text
     assert main(["solve", str(scene), "--explain", "--json"]) == 0
     steps = json.loads(capsys.readouterr().out)
     assert [s["stage"] for s in steps][:3] == ["kernel", "mean displacement", "layer series"]
