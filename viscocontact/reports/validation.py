@@ -1188,7 +1188,7 @@ def generate(plan: Plan, out, workers: int = 2, log=print) -> dict:
 
 
 def configure_parser(parser: argparse.ArgumentParser) -> None:
-    """The options of ``viscocontact validate`` (also ``python -m viscocontact.reports.validation``)."""
+    """The options of ``viscocontact validate`` (``python -m viscocontact.reports.validation``)."""
     parser.add_argument("--quick", action="store_true",
                         help="fewer seeds, loads and speeds (under a minute)")
     parser.add_argument("--out", default="docs",
