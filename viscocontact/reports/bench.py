@@ -440,6 +440,12 @@ def configure_parser(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--points", type=_int_list("--points"), default=None,
                         help="FFT peer grid sizes, e.g. 1024,4096")
     parser.add_argument("--list", action="store_true", help="print the case names and exit")
+    parser.add_argument("--spectral", action="store_true",
+                        help="only the spectral method at its default tolerance against the peer "
+                             f"at {PEER_CELLS} cells on the thesis's rough profiles, side by side "
+                             "(ratio of times, differences of Ã and μ; writes spectral.md)")
+    parser.add_argument("--seeds", type=_int_list("--seeds"), default=None,
+                        help="profile seeds of --spectral (default 0,1,2,3,4)")
 
 
 def plan_from_args(args: argparse.Namespace) -> Plan:
@@ -477,6 +483,8 @@ def run(args: argparse.Namespace) -> int:
         for c in CASES:
             print(c.name)
         return 0
+    if args.spectral:
+        return run_spectral(args)
     plan = plan_from_args(args)
     suite = Path(args.suite)
     if not suite.is_dir():
@@ -491,6 +499,98 @@ def run(args: argparse.Namespace) -> int:
     plot(rows, out / "bench.png")
     for name in ("bench.md", "bench.csv", "bench.png"):
         print(f"wrote {out / name}")
+    return 0
+
+
+#: Grid of the peer in the spectral comparison, and the scene family of that comparison.
+PEER_CELLS = 8192
+SPECTRAL_LOAD = 0.25
+SPECTRAL_RHEOLOGIES = (("elastic", None, 0.0), ("SLS β = 10, ζ = 1e-2", BETA, 1e-2))
+
+
+def spectral_side_by_side(peer, seeds, repeats: int, log=lambda message: None) -> list[dict]:
+    """The spectral method (default tolerance, from scratch) and the peer at
+    :data:`PEER_CELLS` cells (operator and nested grids included) on
+    ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=s)`` at p̃∞ = 0.25, elastic and
+    on the standard linear solid β = 10 at ζ = 1e-2, run in turn in this process; one row per
+    (rheology, seed) with both median times, their ratio and the differences of Ã and μ."""
+    from .._blas import single_blas_thread
+    from ..methods.spectral import Spectral
+    from ..problem import ContactProblem
+    from ..profiles import SelfAffineProfile
+    from ..rheology import Elastic, StandardLinearSolid
+    from ..solvers import Bisection
+
+    rows = []
+    for label, beta, zeta in SPECTRAL_RHEOLOGIES:
+        rheology = Elastic() if beta is None else StandardLinearSolid(beta=beta)
+        for seed in seeds:
+            profile = SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed)
+            problem = ContactProblem(profile=profile, rheology=rheology, solver=Bisection(),
+                                     mean_pressure=SPECTRAL_LOAD, zeta=zeta, method=Spectral())
+            ours, theirs = [], []
+            with single_blas_thread():
+                for _ in range(repeats):                 # alternating: the same machine load
+                    t = time.perf_counter()
+                    mine = problem.solve()
+                    ours.append(time.perf_counter() - t)
+                    t = time.perf_counter()
+                    other = peer.solve(profile, SPECTRAL_LOAD, PEER_CELLS, rheology=rheology,
+                                       zeta=zeta)
+                    theirs.append(time.perf_counter() - t)
+            scale = max(abs(other.friction), 1e-2 * math.sqrt(profile.statistics().m2))
+            row = dict(rheology=label, seed=seed, spectral=statistics.median(ours),
+                       peer=statistics.median(theirs), points=mine.extras.get("points"),
+                       area=mine.area, peer_area=other.area,
+                       d_area=mine.area / other.area - 1.0,
+                       d_friction=(mine.friction - other.friction) / scale,
+                       estimate=mine.error_estimate, converged=mine.converged and other.converged)
+            row["ratio"] = row["spectral"] / row["peer"]
+            rows.append(row)
+            log(f"{label} seed {seed}: spectral {row['spectral']:.3f} s, peer "
+                f"{row['peer']:.3f} s, ratio {row['ratio']:.2f}, dÃ {row['d_area']:+.1e}")
+    return rows
+
+
+def spectral_markdown(rows: list[dict], repeats: int) -> str:
+    """The side-by-side table and the ratio of the medians per rheology."""
+    head = ("| rheology | seed | spectral (s) | grid | peer 8192 (s) | ratio | Ã | "
+            "Ã peer | ΔÃ/Ã | Δμ | estimate |")
+    lines = [f"Spectral method at its default tolerance against the FFT peer at {PEER_CELLS} "
+             f"cells, p̃∞ = {SPECTRAL_LOAD}, median of {repeats} alternating runs per seed.", "",
+             head, "|" + "---|" * 11]
+    for r in rows:
+        lines.append(f"| {r['rheology']} | {r['seed']} | {r['spectral']:.3f} | {r['points']} | "
+                     f"{r['peer']:.3f} | {r['ratio']:.2f} | {r['area']:.6f} | "
+                     f"{r['peer_area']:.6f} | {r['d_area']:+.1e} | {r['d_friction']:+.1e} | "
+                     f"{r['estimate']:.1e} |")
+    lines.append("")
+    for label, _, _ in SPECTRAL_RHEOLOGIES:
+        sel = [r for r in rows if r["rheology"] == label]
+        if sel:
+            med_s = statistics.median(r["spectral"] for r in sel)
+            med_p = statistics.median(r["peer"] for r in sel)
+            lines.append(f"* {label}: median spectral {med_s:.3f} s, median peer {med_p:.3f} s, "
+                         f"ratio of the medians {med_s / med_p:.2f} (below 1: the spectral method "
+                         "is faster).")
+    return "\n".join(lines) + "\n"
+
+
+def run_spectral(args: argparse.Namespace) -> int:
+    """``viscocontact bench --spectral``: the spectral method against the peer."""
+    suite = Path(args.suite)
+    peer = load_peer(suite)
+    repeats = 3 if args.repeats is None else args.repeats
+    if repeats < 1 or repeats > 100:
+        raise ValidationError("--repeats", repeats, "an integer in [1, 100]")
+    seeds = args.seeds or (0, 1, 2, 3, 4)
+    rows = spectral_side_by_side(peer, seeds, repeats, log=lambda m: print(m, file=sys.stderr))
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    text = spectral_markdown(rows, repeats)
+    write_atomic(out / "spectral.md", text.encode())
+    print(text)
+    print(f"wrote {out / 'spectral.md'}")
     return 0
 
 
