@@ -1,0 +1,100 @@
+r"""Contacts of a grid solution and their edges to a fraction of a cell.
+
+A contact is a maximal (cyclic) run of loaded cells. Its edges lie within a cell of the outermost
+loaded centres; where exactly follows from the square-root field at an adhesionless edge
+(``p ∝ √s`` at a distance ``s`` inside). Near an edge, on a grid much finer than the contact, the
+discrete solution is that of a semi-infinite contact with a square-root pressure, the same for every
+edge up to the scale ``√h``: the ratio ``ρ = p_out/p_next`` of the outermost loaded cell's pressure
+to its neighbour's is a universal function of the edge's offset ``θ`` beyond the outermost centre,
+in cells. Its inverse :func:`edge_offset` was fitted on Westergaard's solution (edge known in closed
+form) on grids of 8192-8600 cells, ``h/a`` below 1e-3, over the whole range ``θ ∈ [-0.175, 0.825)``
+that one cell spans (``benchmarks/spectral_edges.py`` refits it). It reproduces the edges of
+those solutions to 7e-4 cells and of grids four times coarser (other loads) to 2.5e-3 cells.
+The classical estimate from ``p²`` linear in ``s`` (``θ = ρ²/(1 - ρ²)``) is off by up to 0.14
+cells.
+
+The same local problem holds at the edges of a viscoelastic contact on grids whose cells are much
+shorter or much longer than the memory lengths (the kernel is then locally elastic with ``E∞`` or
+the relaxed modulus); in between, and at a contact of one or two cells, or two contacts a cell
+apart, the map is an approximation whose error the two-grid estimate of the method sees.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ...kernels.clausen import TWO_PI
+
+#: θ(ρ) as a polynomial in ρ = p_out/p_next, highest power first (see the module docstring).
+PRESSURE_MAP = (0.170112, 0.117857, 0.444254, 0.998289, -0.174569)
+#: θ(γ) as a polynomial in γ = g_1/g_2, the gaps of the first two free cells.
+GAP_MAP = (-80.045773, 46.016534, -15.549831, -0.092477, -1.062313, 0.826013)
+#: ``θ`` for ``ρ → 0``: the offset at which a cell starts to carry load.
+THETA_MIN = float(PRESSURE_MAP[-1])
+
+
+def edge_offset(ratio) -> np.ndarray:
+    """Offset ``θ`` (cells) of an edge beyond the outermost loaded centre, from ``ρ = p_out/p_next``;
+    clipped to the one-cell range ``[THETA_MIN, THETA_MIN + 1]``."""
+    rho = np.clip(np.asarray(ratio, dtype=float), 0.0, None)
+    return np.clip(np.polyval(PRESSURE_MAP, rho), THETA_MIN, THETA_MIN + 1.0)
+
+
+def gap_edge_offset(ratio) -> np.ndarray:
+    """The same offset from ``γ = g_1/g_2``, the gaps of the two free cells next to the edge."""
+    gamma = np.clip(np.asarray(ratio, dtype=float), 0.0, None)
+    return np.clip(np.polyval(GAP_MAP, gamma), THETA_MIN, THETA_MIN + 1.0)
+
+
+def runs(loaded: np.ndarray) -> list[tuple[int, int]]:
+    """Maximal cyclic runs ``(first, length)`` of True cells (one run ``(0, N)`` when all are)."""
+    loaded = np.asarray(loaded, bool)
+    n = loaded.size
+    if loaded.all():
+        return [(0, n)]
+    if not loaded.any():
+        return []
+    start = int(np.flatnonzero(~loaded)[0]) + 1         # just after a gap: no run wraps
+    rolled = np.roll(loaded, -start).astype(np.int8)
+    steps = np.diff(np.concatenate([[0], rolled, [0]]))
+    firsts = np.flatnonzero(steps == 1)
+    lasts = np.flatnonzero(steps == -1)
+    return [(int((f + start) % n), int(e - f)) for f, e in zip(firsts, lasts)]
+
+
+def contact_edges(x0: float, cell: float, pressure: np.ndarray, gap: np.ndarray) -> np.ndarray:
+    """Edges ``[[X_start, X_end], ...]`` of every contact of a grid solution.
+
+    Parameters
+    ----------
+    x0, cell : float
+        Centre of cell 0 and the cell width.
+    pressure : ndarray
+        Cell pressures (``> 0`` on the loaded cells).
+
+    Returns
+    -------
+    ndarray, shape (n_contacts, 2)
+        Sorted by start, the starts in ``[x0 - π, x0 + π)`` (the window of
+        :mod:`viscocontact.contact.topology`, whose origin is the peak minus π); a run of at
+        least three cells gets sub-cell edges (:func:`edge_offset`), a shorter one its cells.
+    """
+    p = np.asarray(pressure, dtype=float)
+    n = p.size
+    out = []
+    for first, length in runs(p > 0):
+        if length == n:
+            raise ValueError("every cell is loaded: a closed contact has no edges")
+        last = first + length - 1
+        lo = x0 + cell * (first - 0.5)
+        hi = x0 + cell * (last + 0.5)
+        if length >= 3:
+            lo = x0 + cell * (first - edge_offset(p[first] / p[(first + 1) % n]))
+            g1, g2 = gap[(last + 1) % n], gap[(last + 2) % n]
+            if p[(last + 2) % n] == 0.0 and 0.0 < g1 < g2:
+                hi = x0 + cell * (last + gap_edge_offset(g1 / g2))
+            else:
+                hi = x0 + cell * (last + edge_offset(p[last % n] / p[(last - 1) % n]))
+        start = x0 - np.pi + np.mod(lo - (x0 - np.pi), TWO_PI)
+        out.append((start, start + (hi - lo)))
+    out.sort()
+    return np.array(out, dtype=float).reshape(-1, 2)
