@@ -2,21 +2,31 @@ r"""Contacts of a grid solution and their edges to a fraction of a cell.
 
 A contact is a maximal (cyclic) run of loaded cells. Its edges lie within a cell of the outermost
 loaded centres; where exactly follows from the square-root field at an adhesionless edge
-(``p ∝ √s`` at a distance ``s`` inside). Near an edge, on a grid much finer than the contact, the
-discrete solution is that of a semi-infinite contact with a square-root pressure, the same for every
-edge up to the scale ``√h``: the ratio ``ρ = p_out/p_next`` of the outermost loaded cell's pressure
-to its neighbour's is a universal function of the edge's offset ``θ`` beyond the outermost centre,
-in cells. Its inverse :func:`edge_offset` was fitted on Westergaard's solution (edge known in closed
-form) on grids of 8192-8600 cells, ``h/a`` below 1e-3, over the whole range ``θ ∈ [-0.175, 0.825)``
-that one cell spans (``benchmarks/spectral_edges.py`` refits it). It reproduces the edges of
-those solutions to 7e-4 cells and of grids four times coarser (other loads) to 2.5e-3 cells.
-The classical estimate from ``p²`` linear in ``s`` (``θ = ρ²/(1 - ρ²)``) is off by up to 0.14
-cells.
+(``p ∝ √s`` inside at a distance ``s``, ``g ∝ s^{3/2}`` outside). On a grid much finer than the
+contact, the discrete solution near an edge is that of a semi-infinite contact, the same for
+every edge up to its scale: the ratio ``ρ = p_out/p_next`` of the outermost loaded cell's
+pressure to its neighbour's, and the ratio ``γ = g_1/g_2`` of the gaps of the first two free
+cells, are universal functions of the edge's offset ``θ`` beyond the outermost loaded centre, in
+cells. Their inverses :func:`edge_offset` and :func:`gap_edge_offset` were fitted on Westergaard's
+solution (edge known in closed form) on grids of 8192-8600 cells, ``h/a`` below 1e-3, over the
+whole range ``θ ∈ [-0.175, 0.825)`` that one cell spans (``benchmarks/spectral_edges.py``). They
+reproduce the edges of those solutions to 6e-4 (``ρ``) and 5e-4 cells (``γ``), and on grids four
+times coarser at other loads to 2.5e-3 and 2.8e-3 cells. The classical estimate from ``p²``
+linear in ``s`` (``θ = ρ²/(1 - ρ²)``) is off by up to 0.14 cells.
 
-The same local problem holds at the edges of a viscoelastic contact on grids whose cells are much
-shorter or much longer than the memory lengths (the kernel is then locally elastic with ``E∞`` or
-the relaxed modulus); in between, and at a contact of one or two cells, or two contacts a cell
-apart, the map is an approximation whose error the two-grid estimate of the method sees.
+Direction of sliding. A viscoelastic kernel remembers the stress ahead of a point
+(:mod:`viscocontact.kernels`): its memory integral adds a term ``∝ x log|x|/ζ_i`` on one side of
+the singularity, which the universal local problem does not have. Measured on a sinusoid with a
+standard linear solid (β = 10, ζ = 0.1, ``h`` from ζ/130), the pressure side is clean at the
+trailing (left) edge and the gap side at the leading (right) edge: there ``θ`` is found to 2e-3
+cells, while the other side is off by 0.03 cells (and by 0.2 at ζ = 0.01, ζ/h = 14). So the
+left edge of a contact is located from ``ρ`` and the right edge from ``γ`` (from ``ρ`` when
+the next contact leaves fewer than two free cells); on an elastic kernel both are unbiased.
+
+Edges stay approximate where the local problem is not the universal one: a contact of one or two
+cells (its cells are its extent), two contacts a few cells apart (a weak square-root field that
+turns into ``s^{3/2}`` within a cell), a memory length of a few cells. The two-grid estimate of
+the method sees those errors.
 """
 from __future__ import annotations
 
@@ -25,9 +35,9 @@ import numpy as np
 from ...kernels.clausen import TWO_PI
 
 #: θ(ρ) as a polynomial in ρ = p_out/p_next, highest power first (see the module docstring).
-PRESSURE_MAP = (0.170112, 0.117857, 0.444254, 0.998289, -0.174569)
+PRESSURE_MAP = (0.166255, 0.123148, 0.442004, 0.998653, -0.174582)
 #: θ(γ) as a polynomial in γ = g_1/g_2, the gaps of the first two free cells.
-GAP_MAP = (-80.045773, 46.016534, -15.549831, -0.092477, -1.062313, 0.826013)
+GAP_MAP = (-80.775776, 46.770632, -15.825487, -0.050758, -1.064523, 0.826041)
 #: ``θ`` for ``ρ → 0``: the offset at which a cell starts to carry load.
 THETA_MIN = float(PRESSURE_MAP[-1])
 
@@ -68,15 +78,16 @@ def contact_edges(x0: float, cell: float, pressure: np.ndarray, gap: np.ndarray)
     ----------
     x0, cell : float
         Centre of cell 0 and the cell width.
-    pressure : ndarray
-        Cell pressures (``> 0`` on the loaded cells).
+    pressure, gap : ndarray
+        Cell pressures (``> 0`` on the loaded cells) and gaps ``u - (r̃ - 1 + Δ̃)``.
 
     Returns
     -------
     ndarray, shape (n_contacts, 2)
         Sorted by start, the starts in ``[x0 - π, x0 + π)`` (the window of
         :mod:`viscocontact.contact.topology`, whose origin is the peak minus π); a run of at
-        least three cells gets sub-cell edges (:func:`edge_offset`), a shorter one its cells.
+        least three cells gets sub-cell edges (its left edge from :func:`edge_offset`, its right
+        edge from :func:`gap_edge_offset`), a shorter one its cells.
     """
     p = np.asarray(pressure, dtype=float)
     n = p.size
