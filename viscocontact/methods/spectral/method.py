@@ -24,7 +24,8 @@ from .closed import ClosedContact, no_contact_result
 from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
 from .operator import OperatorCache, convolve, invert, power
-from .solvers import ACTIVE_SET, POLONSKY_KEER, GridSolution, active_set, polonsky_keer
+from .solvers import (GridSolution, active_set, continued_active_set, polonsky_keer,
+                      violation)
 
 #: Fewest cells ``points`` may ask for.
 MIN_POINTS = 64
@@ -405,26 +406,24 @@ class Spectral(SolutionMethod):
 
     def _solve_grid(self, op, grid, load, pen, start, start_penetration) -> GridSolution:
         workers = self.workers or 1
+        common = dict(mean_pressure=load, penetration=pen, tolerance=self.residual,
+                      workers=workers)
         if op.symmetric:
-            return polonsky_keer(op.eigenvalues, grid.heights, mean_pressure=load,
-                                 penetration=pen, start=start, tolerance=self.residual,
-                                 max_iterations=self.max_iterations,
-                                 preconditioner=op.inverse, workers=workers)
-        its = apps = 0
+            return polonsky_keer(op.eigenvalues, grid.heights, start=start,
+                                 max_iterations=self.max_iterations, preconditioner=op.inverse,
+                                 **common)
+        options = dict(krylov_tolerance=self.krylov_tolerance, max_iterations=self.max_updates,
+                       **common)
         if start is None:
-            pre = polonsky_keer(op.symmetric_part(), grid.heights, mean_pressure=load,
-                                penetration=pen, tolerance=PRESOLVE,
-                                max_iterations=self.max_iterations,
-                                preconditioner=invert(op.symmetric_part()),
-                                workers=workers)
-            start, start_penetration = pre.pressure, pre.penetration
-            its, apps = pre.iterations, pre.applications
-        sol = active_set(op, grid.heights, mean_pressure=load, penetration=pen, start=start,
-                         start_penetration=start_penetration, tolerance=self.residual,
-                         krylov_tolerance=self.krylov_tolerance, max_iterations=self.max_updates,
-                         workers=workers)
-        return attrs.evolve(sol, iterations=sol.iterations + its,
-                            applications=sol.applications + apps)
+            return continued_active_set(op, grid.heights, presolve=PRESOLVE, **options)
+        sol = active_set(op, grid.heights, start=start, start_penetration=start_penetration,
+                         **options)
+        if sol.converged:
+            return sol
+        again = continued_active_set(op, grid.heights, start=start, presolve=PRESOLVE, **options)
+        return attrs.evolve(again, iterations=again.iterations + sol.iterations,
+                            applications=again.applications + sol.applications,
+                            message=f"{sol.message}; then {again.message}")
 
     def _assemble(self, problem, prep, current: GridMeasures, iterations, applications, fields,
                   extras, closed) -> ContactResult:
@@ -458,6 +457,6 @@ class Spectral(SolutionMethod):
                      f"{sol.message}") + ("" if extras["tolerance_met"] else
                                           f"; tolerance {self.tolerance:g} not met (estimate "
                                           f"{extras['error_estimate']:.2g})"),
-            residual=float(sol.residual),
+            residual=violation(gap, loaded),
             min_gap=float(np.min(gap[~loaded])) if (~loaded).any() else 0.0,
             fields=fld, **common)

@@ -38,11 +38,14 @@ from __future__ import annotations
 import attrs
 import numpy as np
 from .krylov import gmres
-from .operator import convolve
+from .operator import Circulant, convolve, invert
 
 POLONSKY_KEER = "Polonsky-Keer"
 #: Relative tolerance of the Krylov solves of the active-set method while the set still changes.
 LOOSE_KRYLOV = 1e-2
+#: Active-set updates allowed to one step of :func:`continued_active_set`, and its smallest step.
+HOMOTOPY_UPDATES = 15
+HOMOTOPY_SMALLEST = 1.0 / 64
 ACTIVE_SET = "active set"
 
 
@@ -159,7 +162,8 @@ def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None,
             if load:
                 z -= np.mean(z[s])
         big_g = float(gs @ z[s])
-        t = np.where(s, z + conjugate * (big_g / g_old) * t, 0.0)
+        beta = conjugate * big_g / g_old if g_old > 0.0 else 0.0
+        t = np.where(s, z + beta * t, 0.0)
         g_old = big_g
         q = convolve(t, lam, workers)
         apps += 1
@@ -167,8 +171,17 @@ def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None,
             q -= np.mean(q[s])
         denom = float(q[s] @ t[s])
         if not denom > 0.0:
-            message = f"search direction lost after {it} iterations"
-            break
+            # no descent within the loaded cells (none left, or a single one under load
+            # control): load the interpenetrating cells by their own stiffness and restart
+            outside = ~s & (g < 0.0)
+            if not outside.any():
+                message = f"search direction lost after {it} iterations"
+                break
+            p[outside] = -g[outside] / circulant_diagonal(lam)
+            if load:
+                p *= mean_pressure / p.mean()
+            conjugate = 0.0
+            continue
         tau = float(gs @ t[s]) / denom
         p = np.maximum(p - tau * t, 0.0)
         overlap = (p == 0.0) & (g < 0.0)
@@ -255,6 +268,8 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
                 continue
             res = violation(gap, active)
             if res <= tolerance and info == 0:
+                if load:
+                    p *= mean_pressure / p.mean()    # the load row to round-off, not to GMRES's
                 return GridSolution(pressure=p, penetration=delta, converged=True, residual=res,
                                     iterations=it, applications=apps[0], solver=ACTIVE_SET,
                                     message=f"active set fixed after {it} updates")
@@ -281,6 +296,52 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
                         iterations=max_iterations, applications=apps[0], solver=ACTIVE_SET,
                         message=f"active set still changing after {max_iterations} updates"
                         if res > tolerance else "Krylov solves did not converge")
+
+
+def continued_active_set(circulant, heights, *, mean_pressure=None, penetration=None,
+                         start=None, tolerance: float = 1e-10, krylov_tolerance: float = 1e-10,
+                         max_iterations: int = 100, restart: int = 60, workers: int = 1,
+                         presolve: float = 1e-6) -> GridSolution:
+    """The active-set method along ``A_t = (A + Aᵀ)/2 + t (A - Aᵀ)/2`` from ``t = 0`` to 1.
+
+    On a strongly non-symmetric operator (a large ``β`` at ``ζ`` of order one) the active set
+    can cycle from a poor start. Every ``A_t`` has the same positive definite symmetric part, so
+    each problem has one solution, which moves continuously with ``t``: the symmetric problem is
+    solved by Polonsky-Keer, then :func:`active_set` follows ``t``, trying the whole remaining
+    step first and halving it while the set does not settle within ``HOMOTOPY_UPDATES``.
+    """
+    lam = np.asarray(circulant.eigenvalues)
+    sym = lam.real.astype(complex)
+    first = polonsky_keer(sym, heights, mean_pressure=mean_pressure, penetration=penetration,
+                          start=start, tolerance=presolve, max_iterations=20 * max_iterations,
+                          preconditioner=invert(sym), workers=workers)
+    its, apps = first.iterations, first.applications
+    current, t, step = first, 0.0, 1.0
+    while True:
+        target = min(1.0, t + step)
+        spectrum = sym + 1j * target * lam.imag
+        op = Circulant(points=len(heights), eigenvalues=spectrum, inverse=invert(spectrum),
+                       symmetric=False)
+        sol = active_set(op, heights, mean_pressure=mean_pressure, penetration=penetration,
+                         start=current.pressure, start_penetration=current.penetration,
+                         tolerance=tolerance, krylov_tolerance=krylov_tolerance,
+                         max_iterations=min(max_iterations, HOMOTOPY_UPDATES), restart=restart,
+                         workers=workers)
+        its += sol.iterations
+        apps += sol.applications
+        if sol.converged:
+            current, t = sol, target
+            if t >= 1.0:
+                steps = "" if step == 1.0 else f" (continued from the symmetric part, last step " \
+                                               f"{step:.3g})"
+                return attrs.evolve(sol, iterations=its, applications=apps,
+                                    message=sol.message + steps)
+            continue
+        step *= 0.5
+        if step < HOMOTOPY_SMALLEST:
+            return attrs.evolve(sol, iterations=its, applications=apps,
+                                message=f"active set did not settle on the way from the "
+                                        f"symmetric operator (stopped at t = {t:.3g})")
 
 
 def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
