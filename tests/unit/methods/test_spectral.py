@@ -1,0 +1,354 @@
+"""The spectral method's parts against independent references: the circulant against the BEM's
+influence coefficients, the loss weights against the displacement's work, the edge maps against
+Westergaard's edges, the result conventions against the BEM, and the contact conditions against
+a dense operator built from the prepared kernel, on random scenes."""
+import attrs
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from viscocontact.adhesion import EnergyBalance
+from viscocontact.errors import ValidationError
+from viscocontact.kernels.half_plane import HalfPlane
+from viscocontact.kernels.layers import ConfinedLayer, FreeLayer
+from viscocontact.methods.base import SolutionMethod
+from viscocontact.methods.spectral import Spectral, SpectralPrepared
+from viscocontact.methods.spectral.edges import contact_edges, runs
+from viscocontact.methods.spectral.grid import UniformGrid, cells_inside, refine
+from viscocontact.methods.spectral.operator import (Circulant, convolve, dissipation_weights,
+                                                    eigenvalues, power)
+from viscocontact.methods.spectral.solvers import polonsky_keer
+from viscocontact.problem import ContactProblem
+from viscocontact.profiles import SelfAffineProfile, Sinusoid
+from viscocontact.reference import westergaard_area
+from viscocontact.result import SolveStatus
+from viscocontact.rheology import Elastic, StandardLinearSolid
+from viscocontact.solvers import Bisection
+
+SLS = StandardLinearSolid(beta=10.0)
+
+
+def _problem(profile=None, rheology=None, zeta=0.0, kernel=None, **load):
+    load = load or {"mean_pressure": 0.3}
+    return ContactProblem(profile=profile or Sinusoid(amplitude=0.1),
+                          rheology=rheology or Elastic(), solver=Bisection(),
+                          kernel=kernel or HalfPlane(), zeta=zeta, **load)
+
+
+def _rough(seed=1, scales=16):
+    return SelfAffineProfile(hurst=0.8, scales=scales, rms=0.01, seed=seed)
+
+
+# ---- input -------------------------------------------------------------------------------
+@pytest.mark.parametrize("field,value", [
+    ("points", 63), ("points", 66.0), ("points", 32), ("points", 1 << 23), ("points", True),
+    ("tolerance", 0.0), ("tolerance", 0.5), ("tolerance", float("nan")), ("tolerance", 1e-7),
+    ("max_points", 1001), ("max_points", 16), ("workers", 0), ("friction_floor", -1.0),
+    ("residual", 0.0), ("krylov_tolerance", 1.0), ("max_iterations", 1), ("max_updates", 0)])
+def test_bad_input_names_the_field(field, value):
+    with pytest.raises(ValidationError, match=f"Spectral.{field} = "):
+        Spectral(**{field: value})
+
+
+def test_points_above_max_points_are_rejected():
+    with pytest.raises(ValidationError, match="Spectral.points = 4096.*max_points = 2048"):
+        Spectral(points=4096, max_points=2048)
+
+
+def test_is_a_solution_method_with_a_name():
+    method = Spectral()
+    assert isinstance(method, SolutionMethod) and method.name == "spectral"
+    assert attrs.evolve(method, tolerance=1e-4).tolerance == 1e-4
+
+
+def test_adhesive_scene_is_unsupported():
+    prob = attrs.evolve(_problem(), adhesion=EnergyBalance(gamma=1e-4))
+    method = Spectral()
+    assert "adhesive" in method.unsupported(prob)
+    assert method.unsupported(_problem()) is None
+    with pytest.raises(ValidationError, match="adhesion"):
+        method.solve(prob)
+    steps = method.plan_steps(prob, prob.prepare())
+    assert len(steps) == 1 and "not applicable" in steps[0].choice
+
+
+# ---- operator ----------------------------------------------------------------------------
+@pytest.mark.parametrize("kernel,rheology,zeta", [
+    (HalfPlane(), Elastic(), 0.0), (HalfPlane(), SLS, 0.3),
+    (ConfinedLayer(thickness=0.5, poisson=0.3), SLS, 1e-2),
+    (FreeLayer(thickness=2.0, poisson=0.4), SLS, 3.0)])
+def test_eigenvalues_are_those_of_the_bem_influence_coefficients(kernel, rheology, zeta):
+    """One cell's displacement at every centre from the real-space tables of the BEM (Clausen,
+    memory integrals, layer spline: eq. 4.32) has the FFT of the circulant's eigenvalues."""
+    prep = kernel.prepare(rheology, zeta)
+    n = 64
+    h = 2 * np.pi / n
+    x = h * np.arange(n)
+    column = -prep.influence(x, np.array([-h / 2]), np.array([h / 2]))[:, 0]    # p = -σ
+    lam = eigenvalues(prep, n)
+    assert np.abs(lam - np.fft.rfft(column)).max() <= 1e-7 * np.abs(lam).max()
+    assert Circulant.build(prep, n).symmetric == (rheology is Elastic() or zeta == 0.0 or
+                                                  isinstance(rheology, Elastic))
+
+
+def test_alias_sums_are_converged():
+    prep = HalfPlane().prepare(SLS, 1e-4)
+    lam = eigenvalues(prep, 256)
+    many = eigenvalues(prep, 256, aliases=2048)
+    assert np.abs(lam - many).max() <= 1e-7 * np.abs(many).max()
+
+
+@pytest.mark.parametrize("kernel,zeta", [(HalfPlane(), 0.3), (HalfPlane(), 0.02),
+                                         (ConfinedLayer(thickness=1.0, poisson=0.3), 1.0)])
+def test_loss_weights_give_the_work_of_the_displacement(kernel, zeta):
+    """``-(1/2π)∫ p u' dx`` of a piecewise-constant pressure, with ``u`` at the cell ends from the
+    BEM's influence coefficients, equals the spectral power."""
+    prep = kernel.prepare(SLS, zeta)
+    n = 64
+    h = 2 * np.pi / n
+    rng = np.random.default_rng(3)
+    p = np.where(rng.random(n) < 0.6, rng.random(n), 0.0)
+    ends = h * (np.arange(n) + 0.5)
+    lefts = h * (np.arange(n) - 0.5)
+    u_ends = -prep.influence(ends, lefts, lefts + h) @ p
+    work = -np.sum(p * (u_ends - np.roll(u_ends, 1))) / (2 * np.pi)
+    assert work > 0
+    assert power(p, dissipation_weights(prep, n)) == pytest.approx(work, rel=2e-5)
+
+
+def test_elastic_kernel_dissipates_nothing():
+    assert not np.any(dissipation_weights(HalfPlane().prepare(Elastic(), 0.0), 128))
+
+
+# ---- grid and edges ----------------------------------------------------------------------
+def test_runs_are_cyclic():
+    assert runs(np.array([1, 1, 0, 0, 1, 0, 1, 1], bool)) == [(4, 1), (6, 4)]
+    assert runs(np.ones(4, bool)) == [(0, 4)] and runs(np.zeros(4, bool)) == []
+
+
+def test_refine_keeps_the_coinciding_centres():
+    v = np.array([1.0, 2.0, 0.0, 4.0])
+    assert np.array_equal(refine(v), [1.0, 1.5, 2.0, 1.0, 0.0, 2.0, 4.0, 2.5])
+
+
+def test_cells_inside_contacts_wrap_the_period():
+    grid = UniformGrid.of(Spectral().prepare(_problem()).shape, 16)      # peak at x = 0
+    h = grid.cell
+    inside = cells_inside(grid, [[-1.5 * h, 1.5 * h]])
+    assert np.flatnonzero(inside).tolist() == [0, 1, 15]
+    assert cells_inside(grid, np.array([0.0, 2 * np.pi])).all()
+
+
+def test_grid_heights_are_the_profile_at_the_centres():
+    shape = Spectral().prepare(_problem(profile=_rough(scales=50))).shape
+    grid = UniformGrid.of(shape, 256)
+    assert np.allclose(grid.heights, shape.heights(grid.x), rtol=0, atol=1e-13)
+    h = grid.cell
+    rise = shape.profile.heights(grid.x + h / 2) - shape.profile.heights(grid.x - h / 2)
+    assert np.allclose(grid.rise, rise, rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("n,bound", [(1000, 2.5e-2), (4000, 5e-3)])
+def test_sub_cell_edges_are_westergaards(n, bound):
+    """Edges to a fraction of a cell over the loads, finer as ``h/a`` falls (the maps are fitted
+    at ``h/a`` below 1e-3)."""
+    shape = Spectral().prepare(_problem()).shape
+    grid = UniformGrid.of(shape, n)
+    op = Circulant.build(HalfPlane().prepare(Elastic(), 0.0), n)
+    worst = 0.0
+    for load in (0.04, 0.13, 0.37, 0.58, 0.81, 0.93):
+        sol = polonsky_keer(op.eigenvalues, grid.heights, mean_pressure=load, tolerance=1e-12,
+                            preconditioner=op.inverse)
+        gap = convolve(sol.pressure, op.eigenvalues) - (grid.heights - 1 + sol.penetration)
+        edges = contact_edges(grid.start, grid.cell, sol.pressure, gap)
+        a = westergaard_area(load) / 2
+        assert edges.shape == (1, 2)
+        worst = max(worst, np.abs(edges[0] - [-a, a]).max() / grid.cell)
+    assert worst <= bound
+
+
+# ---- results -----------------------------------------------------------------------------
+@pytest.mark.parametrize("load", [{"mean_pressure": 0.0}, {"mean_pressure": -0.1},
+                                  {"penetration": 0.0}, {"penetration": -0.2}])
+def test_no_contact_is_reported_as_the_bem_reports_it(load):
+    prob = _problem(**load)
+    s, b = Spectral().solve(prob), prob.solve()
+    assert s.status is b.status is SolveStatus.NO_CONTACT
+    for key in ("area", "mean_pressure", "n_contacts", "full_contact", "converged", "residual",
+                "min_gap", "message"):
+        assert getattr(s, key) == getattr(b, key), key
+    assert np.array_equal(s.penetration, b.penetration, equal_nan=True)
+    assert s.edges.shape == b.edges.shape == (0, 2)
+    assert s.extras["method"] == "spectral"
+
+
+@pytest.mark.parametrize("kernel,load", [
+    (HalfPlane(), {"mean_pressure": 1.3}),
+    (ConfinedLayer(thickness=2.0, poisson=0.3), {"mean_pressure": 1.6}),       # closes at 1.47
+    (ConfinedLayer(thickness=2.0, poisson=0.3), {"penetration": 2.4})])        # ... at 2.2
+def test_closed_contact_is_reported_as_the_bem_reports_it(kernel, load):
+    prob = _problem(kernel=kernel, rheology=SLS, zeta=0.5, **load)
+    s, b = Spectral().solve(prob, fields=True), prob.solve(fields=True)
+    assert s.full_contact and b.full_contact and s.status is b.status is SolveStatus.CONVERGED
+    assert s.area == b.area == 2 * np.pi and s.n_contacts == b.n_contacts == 1
+    assert s.edges.shape == (0, 2)
+    for key in ("mean_pressure", "penetration", "friction", "reduced_friction"):
+        assert getattr(s, key) == pytest.approx(getattr(b, key), rel=1e-9, abs=1e-12), key
+    assert np.allclose(s.fields["pressure"], b.fields["pressure"], rtol=0, atol=1e-9)
+
+
+def test_result_schema_and_contact_conditions():
+    prob = _problem(profile=_rough(), rheology=SLS, zeta=0.1)
+    r = Spectral().solve(prob, fields=True)
+    assert r.converged and r.status is SolveStatus.CONVERGED
+    for key in ("method", "error_estimate", "points", "tolerance_met", "friction_dissipation",
+                "seconds", "events"):
+        assert key in r.extras, key
+    assert r.extras["method"] == "spectral" and r.extras["tolerance_met"]
+    assert r.extras["error_estimate"] <= 1e-3
+    assert r.edge_perturbation == 0.0 and r.zeta == 0.1
+    assert r.function_evaluations > r.iterations > 0
+    assert r.edges.shape == (r.n_contacts, 2) and np.all(np.diff(r.edges, axis=1) > 0)
+    assert r.area == pytest.approx(np.sum(np.diff(r.edges, axis=1)))
+    m2 = prob.profile.statistics().m2
+    assert r.reduced_friction == pytest.approx(r.friction / np.sqrt(m2))
+    f = r.fields
+    assert len(f["x"]) == len(f["pressure"]) == r.extras["points"]
+    assert np.mean(f["pressure"]) == pytest.approx(0.3, rel=1e-12)
+    assert r.residual <= 1e-9 and r.min_gap >= -r.residual
+    loaded = f["pressure"] > 0
+    assert np.abs(f["gap"][loaded]).max() <= r.residual
+    assert r.min_gap == pytest.approx(f["gap"][~loaded].min())
+
+
+@pytest.mark.parametrize("rheology,options", [(Elastic(), {"max_iterations": 10}),
+                                              (SLS, {"max_updates": 2})])
+def test_a_solve_that_does_not_converge_says_so(rheology, options):
+    prob = _problem(profile=_rough(scales=50), rheology=rheology, zeta=1e-2)
+    r = Spectral(points=4096, **options).solve(prob)
+    assert not r.converged and r.status is SolveStatus.NOT_CONVERGED
+    assert "did not converge" in r.message and r.residual > 1e-9
+
+
+def test_warm_start_gives_the_same_answer_with_fewer_iterations():
+    prob = _problem(profile=_rough(scales=50), rheology=SLS, zeta=1e-2, mean_pressure=0.25)
+    method = Spectral()
+    prep = method.prepare(prob)
+    cold = method.solve(prob, prepared=prep)
+    for initial in (cold, cold.edges, cold.edges.ravel()):
+        warm = method.solve(prob, initial=initial, prepared=prep)
+        assert warm.area == pytest.approx(cold.area, rel=1e-9)
+        assert warm.friction == pytest.approx(cold.friction, rel=1e-9)
+        assert warm.iterations < cold.iterations
+        assert warm.function_evaluations < cold.function_evaluations
+    near = attrs.evolve(prob, mean_pressure=0.27)
+    a, b = method.solve(near, prepared=prep), method.solve(near, initial=cold, prepared=prep)
+    # along a sweep the warm start begins on the previous point's grid: its answer may be on
+    # another grid than a cold solve's, the same to within both estimates
+    bound = (a.extras["error_estimate"] + b.extras["error_estimate"]) * a.area
+    assert abs(b.area - a.area) <= bound and b.iterations < a.iterations
+
+
+def test_warm_start_from_a_closed_contact():
+    closed = Spectral().solve(_problem(mean_pressure=1.2))
+    assert closed.full_contact
+    prob = _problem(mean_pressure=0.6)
+    assert Spectral().solve(prob, initial=closed).area == pytest.approx(
+        Spectral().solve(prob).area, rel=1e-9)
+
+
+def test_prepared_operators_are_kept_and_reused():
+    prob = _problem(rheology=SLS, zeta=0.2)
+    method = Spectral()
+    prep = method.prepare(prob)
+    assert isinstance(prep, SpectralPrepared) and len(prep.operators) == 0
+    first = method.solve(prob, prepared=prep)
+    built = len(prep.operators)
+    assert built > 0
+    again = method.solve(prob, prepared=prep)
+    assert len(prep.operators) == built and again.area == first.area
+    plain = method.solve(prob, prepared=prob.prepare())         # a BEM Prepared works too
+    assert plain.area == first.area
+
+
+def test_penetration_control_inverts_load_control():
+    load = _problem(profile=_rough(), rheology=SLS, zeta=0.1, mean_pressure=0.3)
+    a = Spectral(points=2048).solve(load)
+    b = Spectral(points=2048).solve(attrs.evolve(load, mean_pressure=None,
+                                                 penetration=a.penetration))
+    assert b.converged and b.mean_pressure == pytest.approx(0.3, rel=1e-8)
+    assert b.area == pytest.approx(a.area, rel=1e-8)
+
+
+def test_plan_names_the_grid_and_the_solver():
+    for rheology, zeta, solver in ((Elastic(), 0.0, "Polonsky-Keer"), (SLS, 1.0, "active set")):
+        prob = _problem(profile=_rough(scales=50), rheology=rheology, zeta=zeta)
+        steps = {s.stage: s for s in Spectral().plan_steps(prob, prob.prepare())}
+        assert solver in steps["solver"].choice
+        assert "1024 then 2048 cells" in steps["grid"].choice
+        assert "shortest wavelength" in steps["grid"].reason
+    steps = {s.stage: s for s in Spectral(points=512).plan_steps(_problem(), None)}
+    assert steps["grid"].choice.startswith("512 cells")
+
+
+# ---- contact conditions on random scenes -------------------------------------------------
+@st.composite
+def scenes(draw):
+    if draw(st.booleans()):
+        profile = Sinusoid(amplitude=draw(st.floats(1e-3, 1.0)))
+    else:
+        profile = SelfAffineProfile(hurst=draw(st.floats(0.4, 1.0)),
+                                    scales=draw(st.integers(2, 24)),
+                                    rms=draw(st.floats(1e-3, 0.1)),
+                                    seed=draw(st.integers(0, 2**32 - 1)))
+    zeta = draw(st.one_of(st.just(0.0), st.floats(-3.0, 2.0).map(lambda e: 10.0**e)))
+    rheology = StandardLinearSolid(beta=draw(st.floats(1.5, 100.0))) if zeta else Elastic()
+    kernel = draw(st.sampled_from([HalfPlane(), ConfinedLayer(thickness=1.0, poisson=0.3)]))
+    control = draw(st.sampled_from(["mean_pressure", "penetration"]))
+    value = draw(st.floats(0.02, 0.9))
+    return ContactProblem(profile=profile, rheology=rheology, kernel=kernel, solver=Bisection(),
+                          zeta=zeta, **{control: value})
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(scenes())
+def test_contact_conditions_hold_on_random_scenes(prob):
+    """p >= 0, g >= 0, p·g = 0 and the load, with the gap from the BEM's influence
+    coefficients (an operator built independently of the FFT circulant)."""
+    prep = prob.prepare()
+    r = Spectral(points=256).solve(prob, fields=True, prepared=prep)
+    assert r.converged, r.message
+    p = r.fields["pressure"]
+    if prob.mean_pressure is not None:
+        assert np.mean(p) == pytest.approx(prob.mean_pressure, rel=1e-12)
+    assert np.all(p >= -1e-9)
+    if r.full_contact:
+        return
+    x = r.fields["x"]
+    h = 2 * np.pi / len(x)
+    u = -prep.kernel.influence(x, x - h / 2, x + h / 2) @ p
+    gap = u - (prep.shape.heights(x) - 1 + r.penetration)
+    scale = 1e-7 * max(1.0, float(np.max(np.abs(u))))
+    loaded = p > 0
+    assert np.all(gap[~loaded] >= -scale)
+    assert np.all(np.abs(gap[loaded]) <= scale)
+    assert np.max(np.abs(p * gap)) <= scale * max(1.0, float(p.max()))
+    assert r.mean_pressure == pytest.approx(np.mean(p), rel=1e-12)
+
+
+@pytest.mark.parametrize("control", [{"penetration": 0.3}, {"mean_pressure": 0.3}])
+def test_polonsky_keer_recovers_from_a_start_without_descent(control):
+    """A start with no loaded cell (penetration control) or a single one (load control, where
+    the projected gradient vanishes) still converges, to the same pressure as the default."""
+    n = 64
+    op = Circulant.build(HalfPlane().prepare(Elastic(), 0.0), n)
+    r = np.cos(2 * np.pi * np.arange(n) / n)
+    start = np.zeros(n)
+    if "mean_pressure" in control:
+        start[5] = 1.0
+    ref = polonsky_keer(op.eigenvalues, r, tolerance=1e-12, **control)
+    for pre in (None, op.inverse):
+        sol = polonsky_keer(op.eigenvalues, r, start=start, preconditioner=pre, tolerance=1e-12,
+                            **control)
+        assert sol.converged and np.allclose(sol.pressure, ref.pressure, rtol=0, atol=1e-9)

@@ -1,0 +1,462 @@
+r"""The :class:`Spectral` solution method: grids, solvers and the error estimate put together.
+
+A solve runs a ladder of grids ``N/2, N, 2N, ...``: each grid starts from the solution on the
+previous one (or, on the first, from a warm start or from scratch); after every grid but the first
+the change of ``Ã`` and ``μ`` from the previous grid gives a Richardson estimate of the error of the
+finer one. The ladder stops when the estimate is within the tolerance or at ``max_points``.
+"""
+from __future__ import annotations
+
+import math
+import time
+from typing import ClassVar
+
+import attrs
+import numpy as np
+
+from ..._validation import in_range, int_range
+from ...errors import ValidationError
+from ...kernels.clausen import TWO_PI
+from ...problem import Prepared
+from ...result import ContactResult, SolveStatus
+from ..base import SolutionMethod
+from .closed import ClosedContact, no_contact_result
+from .edges import contact_edges, runs
+from .grid import UniformGrid, cells_inside, refine
+from .operator import OperatorCache, convolve, invert, power
+from .solvers import (GridSolution, active_set, continued_active_set, polonsky_keer,
+                      violation)
+
+#: Fewest cells ``points`` may ask for.
+MIN_POINTS = 64
+#: Fewest cells of the coarsest grid of the ladder.
+COARSEST = 32
+#: Without a warm start the ladder begins at this many cells or fewer (nested iteration: each
+#: grid starts from the solution on the previous one, so the coarse grids cost little).
+LADDER_START = 256
+#: Most cells a grid may have (``points`` and ``max_points`` are validated against it).
+MAX_POINTS = 1 << 22
+#: Cells per shortest wavelength of the profile at tolerance 1e-3 (scaled by
+#: ``(1e-3/tolerance)^(1/ORDER_AREA)``) for the first fine grid.
+CELLS_PER_WAVELENGTH = 32.0
+#: Fewest cells of the first fine grid when the tolerance does not ask for more.
+FIRST_POINTS = 256
+#: Convergence order assumed by the Richardson estimate: the lowest observed on rough profiles
+#: (module docstring of :mod:`viscocontact.methods.spectral`).
+ORDER = 1.0
+#: Expected convergence order of Ã, which sizes the first grid for a tolerance.
+ORDER_AREA = 2.0
+#: Tolerance of the Polonsky-Keer start of the active-set method on the first grid.
+PRESOLVE = 1e-6
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class SpectralPrepared(Prepared):
+    """A problem's prepared tables plus the circulant operators of the spectral method.
+
+    Build with :meth:`Spectral.prepare` and pass as ``prepared=`` along a sweep at fixed rheology,
+    kernel and ζ: the eigenvalues of every grid are then computed once.
+    """
+
+    operators: OperatorCache = attrs.field(factory=OperatorCache)
+
+
+def _even_points(lo: int, hi: int):
+    desc = f"an even integer in [{lo}, {hi}]"
+
+    def check(inst, attribute, value):
+        name = f"{type(inst).__name__}.{attribute.name}"
+        if value is None and attribute.name == "points":
+            return
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+            raise ValidationError(name, value, desc)
+        if value % 2 or not lo <= value <= hi:
+            raise ValidationError(name, value, desc)
+
+    return check
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class GridMeasures:
+    """What one grid solve gives: the solution, its contacts and the two integral measures."""
+
+    grid: UniformGrid
+    solution: GridSolution
+    edges: np.ndarray
+    area: float
+    friction: float
+
+    @property
+    def closed(self) -> bool:
+        return bool(np.all(self.solution.pressure > 0))
+
+
+def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int = 1
+            ) -> GridMeasures:
+    """Contacts, area (sub-cell edges) and friction (eq. 4.16) of a grid solution."""
+    p = solution.pressure
+    pm = float(p.mean())
+    mu = float(-(p @ grid.rise) / (TWO_PI * pm)) if pm > 0 else float("nan")
+    if np.all(p > 0):
+        return GridMeasures(grid=grid, solution=solution, edges=np.zeros((0, 2)), area=TWO_PI,
+                            friction=mu)
+    gap = convolve(p, eigenvalues, workers) - (grid.heights - 1.0 + solution.penetration)
+    edges = contact_edges(grid.start, grid.cell, p, gap)
+    area = float(min(np.sum(edges[:, 1] - edges[:, 0]), TWO_PI))
+    return GridMeasures(grid=grid, solution=solution, edges=edges, area=area, friction=mu)
+
+
+def changes(coarse: GridMeasures, fine: GridMeasures, m2: float,
+            friction_floor: float) -> tuple[float, float]:
+    """Relative changes of ``Ã`` and ``μ`` from the coarse to the fine grid (``μ`` relative to
+    ``max(|μ|, friction_floor·√m2)``)."""
+    d_area = abs(fine.area - coarse.area) / max(fine.area, 1e-300)
+    scale = max(abs(fine.friction), friction_floor * math.sqrt(max(m2, 0.0)), 1e-300)
+    d_mu = abs(fine.friction - coarse.friction) / scale
+    if not np.isfinite(d_mu):
+        d_mu = 0.0 if not (np.isfinite(fine.friction) or np.isfinite(coarse.friction)) else np.inf
+    return float(d_area), float(d_mu)
+
+
+def estimate(change: tuple[float, float], previous: tuple[float, float] | None = None
+             ) -> tuple[float, float]:
+    """Relative error estimates of ``Ã`` and ``μ`` on the finer of two grids (ratio 2).
+
+    Richardson: the change between the two grids over ``2^p - 1`` (``p = ORDER``), and at least
+    the change between the two grids before over ``2^p (2^p - 1)`` (``previous``), so that a
+    change that happens to be small does not hide a larger error seen one level down.
+    """
+    factor = 2.0**ORDER - 1.0
+    out = [c / factor for c in change]
+    if previous is not None:
+        out = [max(o, c / (factor * 2.0**ORDER)) for o, c in zip(out, previous)]
+    return float(out[0]), float(out[1])
+
+
+def next_start(grid: UniformGrid, coarse: GridMeasures) -> np.ndarray:
+    """The starting pressure on ``grid`` (twice as fine as ``coarse``'s): the coarse pressure
+    carried over (:func:`~viscocontact.methods.spectral.grid.refine`) on the cells whose centres
+    lie inside the coarse contacts' sub-cell edges, zero elsewhere, so that the first loaded set
+    is already the fine grid's to within the edge estimates."""
+    p = refine(coarse.solution.pressure)
+    if coarse.closed or coarse.edges.size == 0:
+        return p
+    inside = cells_inside(grid, coarse.edges)
+    floor = 1e-3 * float(np.mean(p[p > 0])) if np.any(p > 0) else 1.0
+    return np.where(inside, np.maximum(p, floor), 0.0)
+
+
+def first_points(wavelength: float | None, tolerance: float, max_points: int) -> int:
+    """The first fine grid: ``CELLS_PER_WAVELENGTH`` cells per shortest wavelength of the profile
+    at tolerance 1e-3, scaled with ``tolerance^(-1/ORDER_AREA)``, rounded up to a power of two,
+    at least :data:`FIRST_POINTS`, at most ``max_points``."""
+    per = CELLS_PER_WAVELENGTH * (1e-3 / tolerance) ** (1.0 / ORDER_AREA)
+    span = TWO_PI / wavelength if wavelength else 32.0
+    want = max(per * span, FIRST_POINTS)
+    n = 1 << int(math.ceil(math.log2(want)))
+    return int(min(n, max_points - max_points % 2))
+
+
+@attrs.frozen(kw_only=True)
+class Spectral(SolutionMethod):
+    r"""Uniform-grid spectral method for adhesionless scenes (see :mod:`viscocontact.methods.spectral`).
+
+    Parameters
+    ----------
+    tolerance : float
+        Requested relative accuracy of ``Ã`` and ``μ`` (``μ`` relative to
+        ``max(|μ|, friction_floor·√m2)``), in ``[1e-6, 0.1]``; the grid is doubled until the
+        two-grid estimate is within it.
+    points : int or None
+        Cells of the final grid (even, ``[64, 2^22]``); ``None`` chooses them from the profile's
+        shortest wavelength and ``tolerance``, and refines until the estimate meets it.
+    max_points : int
+        Most cells the automatic refinement may use (even, ``[64, 2^22]``).
+    workers : int or None
+        Threads of ``scipy.fft`` (``None``: 1).
+    friction_floor : float
+        ``μ`` is resolved relative to ``max(|μ|, friction_floor·√m2)``, i.e. to
+        ``tolerance·friction_floor`` in the reduced friction ``μ/√m2`` when ``μ`` is smaller (it
+        vanishes on an elastic solid), in ``[0, 1]``.
+    residual : float
+        Largest violation of the contact conditions (gap inside a contact, interpenetration
+        outside), in units of the profile amplitude, at which a grid solve stops.
+    krylov_tolerance : float
+        Relative tolerance of the GMRES solves of the active-set method.
+    max_iterations : int
+        Conjugate-gradient steps per grid (Polonsky-Keer).
+    max_updates : int
+        Active-set updates per grid.
+    """
+
+    name: ClassVar[str] = "spectral"
+
+    tolerance: float = attrs.field(default=1e-3, validator=in_range(1e-6, 0.1))
+    points: int | None = attrs.field(default=None, validator=_even_points(MIN_POINTS, MAX_POINTS))
+    max_points: int = attrs.field(default=1 << 17, validator=_even_points(MIN_POINTS, MAX_POINTS))
+    workers: int | None = attrs.field(
+        default=None, validator=attrs.validators.optional(int_range(1, 1024)))
+    friction_floor: float = attrs.field(default=1e-2, validator=in_range(0.0, 1.0))
+    residual: float = attrs.field(default=1e-9, validator=in_range(1e-15, 1e-4))
+    krylov_tolerance: float = attrs.field(default=1e-10, validator=in_range(1e-15, 1e-2))
+    max_iterations: int = attrs.field(default=20000, validator=int_range(10, 10**7))
+    max_updates: int = attrs.field(default=100, validator=int_range(2, 10**5))
+
+    def __attrs_post_init__(self):
+        if self.points is not None and self.points > self.max_points:
+            raise ValidationError("Spectral.points", self.points,
+                                  f"an even integer in [{MIN_POINTS}, max_points = "
+                                  f"{self.max_points}]")
+
+    # ---- the interface ----------------------------------------------------------------------
+    def unsupported(self, problem) -> str | None:
+        gamma = float(problem.adhesion.work_of_adhesion)
+        if gamma > 0:
+            return (f"adhesive scene (work of adhesion {gamma:g}): a uniform grid has no edge "
+                    "energy balance; use the boundary-element method")
+        return None
+
+    def prepare(self, problem) -> SpectralPrepared:
+        """The problem's prepared tables with an empty operator cache (pass as ``prepared=``)."""
+        base = problem.prepare()
+        return SpectralPrepared(kernel=base.kernel, shape=base.shape, m2=base.m2)
+
+    def solve(self, problem, initial=None, *, fields: bool = False, prepared=None):
+        """The equilibrium of an adhesionless ``problem`` on uniform grids.
+
+        Parameters
+        ----------
+        problem : ContactProblem
+        initial : ContactResult or array of edges, optional
+            Warm start: the first grid's loaded cells are those inside these contacts (shape
+            (n, 2) or flat; a closed contact loads every cell).
+        fields : bool
+            Return ``x``, ``pressure``, ``displacement`` and ``gap`` on the final grid.
+        prepared : Prepared, optional
+            The problem's tables; a :class:`SpectralPrepared` also keeps the operators.
+
+        Raises
+        ------
+        ValidationError
+            For an adhesive problem (:meth:`unsupported`).
+        """
+        started = time.perf_counter()
+        why = self.unsupported(problem)
+        if why is not None:
+            raise ValidationError("ContactProblem.adhesion", problem.adhesion,
+                                  "an adhesionless model (work_of_adhesion = 0) for the spectral "
+                                  "method")
+        prep = self._prepared(problem, prepared)
+        load, pen = problem.mean_pressure, problem.penetration
+        events: list[str] = []
+        extras = {"method": self.name, "error_estimate": 0.0, "points": 0, "tolerance_met": True,
+                  "friction_dissipation": np.nan, "seconds": 0.0, "events": events}
+        common = dict(iterations=0, function_evaluations=0, zeta=float(problem.zeta),
+                      edge_perturbation=0.0, extras=extras)
+        if (load is not None and not load > 0) or (pen is not None and not pen > 0):
+            extras["seconds"] = time.perf_counter() - started
+            return no_contact_result(common, pen)
+        closed = ClosedContact.of(prep.shape, prep.kernel, 0)
+        if closed.closes(load, pen):
+            extras["seconds"] = time.perf_counter() - started
+            events.append("the closed contact carries the load without tension")
+            return closed.result(prep.m2, common, load, pen, fields)
+        return self._ladder(problem, prep, initial, fields, started, events, extras, closed)
+
+    def plan_steps(self, problem, prepared) -> tuple:
+        from ...plan import PlanStep
+
+        why = self.unsupported(problem)
+        if why is not None:
+            return (PlanStep(stage="method", choice="spectral: not applicable", reason=why),)
+        prep = self._prepared(problem, prepared)
+        wavelength = prep.shape.wavelength
+        if self.points is not None:
+            grid = PlanStep(stage="grid", choice=f"{self.points} cells, estimate from "
+                            f"{self.points // 2}", reason="points given")
+            n = self.points
+        else:
+            n = first_points(wavelength, self.tolerance, self.max_points)
+            per = CELLS_PER_WAVELENGTH * (1e-3 / self.tolerance) ** (1.0 / ORDER_AREA)
+            why_grid = (f"{per:.3g} cells per shortest wavelength λ_min = {wavelength:.4g} for "
+                        f"tolerance {self.tolerance:g}" if wavelength else
+                        f"shortest wavelength unknown: at least {n} cells")
+            grid = PlanStep(stage="grid",
+                            choice=f"{n // 2} then {n} cells, doubled up to {self.max_points} "
+                                   f"until the estimate is <= {self.tolerance:g}",
+                            reason=why_grid)
+        op = prep.operators.circulant(prep.kernel, n)
+        lam = op.eigenvalues
+        asym = float(np.max(np.abs(lam.imag)) / np.max(np.abs(lam)))
+        operator = PlanStep(stage="operator",
+                            choice="circulant by FFT: Clausen closed form of the instantaneous "
+                                   "part + alias sums of the rest of the multiplier",
+                            reason=f"{type(problem.kernel).__name__}, c0 = {prep.kernel.mean:.4g}")
+        if op.symmetric:
+            solver = PlanStep(stage="solver", choice="Polonsky-Keer conjugate gradients",
+                              reason=f"the operator is symmetric (max|Im Λ|/max|Λ| = {asym:.2g})")
+        else:
+            solver = PlanStep(stage="solver",
+                              choice="active set (semismooth Newton) + GMRES preconditioned by "
+                                     "the inverse circulant; Polonsky-Keer on Re Λ to start",
+                              reason=f"viscoelastic: the operator is not symmetric "
+                                     f"(max|Im Λ|/max|Λ| = {asym:.2g})")
+        control = ("load control, p̃∞ = " + f"{problem.mean_pressure:g}"
+                   if problem.mean_pressure is not None
+                   else "penetration control, Δ̃ = " + f"{problem.penetration:g}")
+        return (PlanStep(stage="method", choice="spectral: uniform grid, FFT products",
+                         reason="adhesionless scene"),
+                grid, operator, solver,
+                PlanStep(stage="control", choice=control,
+                         reason="the closed contact is returned directly when it carries the "
+                                "load without tension"),
+                PlanStep(stage="edges", choice="sub-cell edges from the pressure ratio of the "
+                                               "two outermost loaded cells",
+                         reason="universal square-root edge field (adhesionless)"),
+                PlanStep(stage="estimate",
+                         choice=f"Richardson on Ã and μ between N/2 and N (order {ORDER:g})",
+                         reason=f"tolerance {self.tolerance:g}"),
+                PlanStep(stage="reuse", choice="eigenvalues once per (kernel, N) in "
+                                               "SpectralPrepared (pass prepared= along a sweep)",
+                         reason="they depend on rheology, kernel and ζ only"),
+                PlanStep(stage="fields", choice="pressure, displacement and gap on the final "
+                                                "grid only when asked", reason="fields=True"))
+
+    # ---- the ladder of grids ---------------------------------------------------------------
+    def _prepared(self, problem, prepared) -> SpectralPrepared:
+        if isinstance(prepared, SpectralPrepared):
+            return prepared
+        if prepared is None:
+            return self.prepare(problem)
+        return SpectralPrepared(kernel=prepared.kernel, shape=prepared.shape, m2=prepared.m2)
+
+    def _ladder(self, problem, prep, initial, fields, started, events, extras, closed):
+        load, pen = problem.mean_pressure, problem.penetration
+        if self.points is not None:
+            target = final = self.points
+        else:
+            target = first_points(prep.shape.wavelength, self.tolerance, self.max_points)
+            final = self.max_points
+            before = getattr(initial, "extras", None) or {}
+            if before.get("method") == self.name and 0 < int(before.get("points", 0)) <= final:
+                # along a sweep the previous point's grid is the best first guess of this one's
+                target = max(target, int(before["points"]))
+        # the ladder halves the target grid exactly down to its first grid: the one below the
+        # target with a warm start, else the first at or below LADDER_START cells
+        n = target // 2
+        while initial is None and n % 4 == 0 and n // 2 >= COARSEST and n > LADDER_START:
+            n //= 2
+        grid = UniformGrid.of(prep.shape, n)
+        start = None
+        if initial is not None:
+            start = self._warm_start(grid, initial, load)
+            events.append(f"warm start: {int(np.sum(start > 0))} of {n} cells loaded")
+        previous, current = None, None
+        iterations = applications = 0
+        errors, last = (np.inf, np.inf), None
+        while True:
+            op = prep.operators.circulant(prep.kernel, grid.points)
+            sol = self._solve_grid(op, grid, load, pen, start,
+                                   None if previous is None else previous.solution.penetration)
+            iterations += sol.iterations
+            applications += sol.applications
+            events.append(f"{grid.points} cells: {sol.solver}, {sol.message}")
+            current = measure(grid, sol, op.eigenvalues, self.workers or 1)
+            if not sol.converged:
+                break
+            if previous is not None:
+                change = changes(previous, current, prep.m2, self.friction_floor)
+                errors = estimate(change, last)
+                last = change
+            if previous is not None and grid.points >= target:
+                if max(errors) <= self.tolerance or 2 * grid.points > final:
+                    break
+                events.append(f"estimate {max(errors):.2g} > tolerance at {grid.points} cells: "
+                              "grid doubled")
+            previous = current
+            grid = UniformGrid.of(prep.shape, 2 * grid.points)
+            start = next_start(grid, current)
+        error = float(max(errors))
+        extras.update(error_estimate=error, points=current.grid.points,
+                      tolerance_met=bool(error <= self.tolerance),
+                      estimates={"area": float(errors[0]), "friction": float(errors[1])})
+        if previous is not None:
+            extras["coarse"] = {"points": previous.grid.points, "area": previous.area,
+                                "friction": previous.friction}
+        if current.solution.converged and error > self.tolerance:
+            events.append(f"tolerance {self.tolerance:g} not met: estimate {error:.2g} at "
+                          f"{current.grid.points} cells")
+        result = self._assemble(problem, prep, current, iterations, applications, fields,
+                                extras, closed)
+        extras["seconds"] = time.perf_counter() - started
+        return result
+
+    def _warm_start(self, grid, initial, load) -> np.ndarray:
+        if getattr(initial, "full_contact", False):
+            mask = np.ones(grid.points, bool)
+        else:
+            edges = np.asarray(getattr(initial, "edges", initial), dtype=float)
+            mask = cells_inside(grid, edges.ravel()) if edges.size else np.zeros(grid.points, bool)
+        if not mask.any():
+            mask[0] = True                               # the peak
+        start = mask.astype(float)
+        if load is not None:
+            start *= load / start.mean()
+        return start
+
+    def _solve_grid(self, op, grid, load, pen, start, start_penetration) -> GridSolution:
+        workers = self.workers or 1
+        common = dict(mean_pressure=load, penetration=pen, tolerance=self.residual,
+                      workers=workers)
+        if op.symmetric:
+            return polonsky_keer(op.eigenvalues, grid.heights, start=start,
+                                 max_iterations=self.max_iterations, preconditioner=op.inverse,
+                                 **common)
+        options = dict(krylov_tolerance=self.krylov_tolerance, max_iterations=self.max_updates,
+                       **common)
+        if start is None:
+            return continued_active_set(op, grid.heights, presolve=PRESOLVE, **options)
+        sol = active_set(op, grid.heights, start=start, start_penetration=start_penetration,
+                         **options)
+        if sol.converged:
+            return sol
+        again = continued_active_set(op, grid.heights, start=start, presolve=PRESOLVE, **options)
+        return attrs.evolve(again, iterations=again.iterations + sol.iterations,
+                            applications=again.applications + sol.applications,
+                            message=f"{sol.message}; then {again.message}")
+
+    def _assemble(self, problem, prep, current: GridMeasures, iterations, applications, fields,
+                  extras, closed) -> ContactResult:
+        grid, sol = current.grid, current.solution
+        workers = self.workers or 1
+        common = dict(iterations=int(iterations), function_evaluations=int(applications),
+                      zeta=float(problem.zeta), edge_perturbation=0.0, extras=extras)
+        if current.closed:
+            return closed.result(prep.m2, common, problem.mean_pressure, problem.penetration,
+                                 fields, message="every cell loaded: contact closed over the "
+                                                 "period to the grid's resolution")
+        p = sol.pressure
+        op = prep.operators.circulant(prep.kernel, grid.points)
+        u = convolve(p, op.eigenvalues, workers)
+        gap = u - (grid.heights - 1.0 + sol.penetration)
+        loaded = p > 0
+        pm = float(p.mean())
+        loss = prep.operators.dissipation(prep.kernel, grid.points)
+        extras["friction_dissipation"] = prep.shape.amplitude * power(p, loss, workers) / pm
+        extras["solver"] = sol.solver
+        mu = current.friction
+        sqrt_m2 = math.sqrt(prep.m2) if prep.m2 > 0 else np.nan
+        fld = ({"x": grid.x.copy(), "pressure": p.copy(), "displacement": u, "gap": gap}
+               if fields else None)
+        return ContactResult(
+            area=current.area, mean_pressure=pm, penetration=float(sol.penetration), friction=mu,
+            reduced_friction=mu / sqrt_m2, n_contacts=len(runs(loaded)),
+            edges=current.edges, full_contact=False, converged=bool(sol.converged),
+            status=SolveStatus.CONVERGED if sol.converged else SolveStatus.NOT_CONVERGED,
+            message=("converged" if sol.converged else f"grid solve did not converge: "
+                     f"{sol.message}") + ("" if extras["tolerance_met"] else
+                                          f"; tolerance {self.tolerance:g} not met (estimate "
+                                          f"{extras['error_estimate']:.2g})"),
+            residual=violation(gap, loaded),
+            min_gap=float(np.min(gap[~loaded])) if (~loaded).any() else 0.0,
+            fields=fld, **common)

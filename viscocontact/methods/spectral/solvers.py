@@ -1,0 +1,395 @@
+r"""The two grid solvers of the spectral method: Polonsky-Keer and a primal-dual active set.
+
+Both solve the discrete contact problem on one grid: pressures ``p_k >= 0``, gaps
+``g_k = (A p)_k - (r̃_k - 1 + Δ̃) >= 0`` and ``p_k g_k = 0``, under load control (``mean(p) = p̃∞``
+given, the penetration ``Δ̃`` a multiplier) or penetration control (``Δ̃`` given). ``A`` is the
+circulant of :mod:`~viscocontact.methods.spectral.operator`.
+
+* :func:`polonsky_keer` — the constrained conjugate gradients of Polonsky & Keer (1999) on the
+  complementary energy ``½ pᵀAp - pᵀ(r̃ - 1 + Δ̃)``, in load control with the gradient projected to
+  zero mean over the loaded cells and the load restored after every step, in penetration control
+  without either. ``A`` must be symmetric (an elastic kernel, or ζ at a limit).
+* :func:`active_set` — primal-dual active set (a semismooth Newton method, Hintermüller, Ito &
+  Kunisch 2002): on the active set ``C`` the gap vanishes, off it the pressure does. Each step
+  solves ``A_CC p_C = r̃_C - 1 + Δ̃`` (with the load row ``mean(p) = p̃∞`` in load control) by
+  restarted GMRES on FFT products, preconditioned by the inverse circulant restricted to ``C``
+  (Vollebregt 2014), the load row eliminated in the preconditioner through ``M 1``. Then cells of
+  ``C`` whose pressure is not positive leave it and cells outside whose gap is negative join.
+  It stops when ``C`` does not change. Any ``A``: the viscoelastic operator is not symmetric.
+
+Both stop on the largest violation of the contact conditions, ``max(max_C |g|, max_{∉C} -g)``,
+in units of the profile amplitude (the heights are normalised to 1).
+
+References
+----------
+Polonsky, I. A. & Keer, L. M. (1999). A numerical method for solving rough contact problems
+based on the multi-level multi-summation and conjugate gradient techniques. Wear 231, 206-219.
+doi:10.1016/S0043-1648(99)00113-1
+
+Hintermüller, M., Ito, K. & Kunisch, K. (2002). The primal-dual active set strategy as a
+semismooth Newton method. SIAM J. Optim. 13, 865-888. doi:10.1137/S1052623401383558
+
+Vollebregt, E. A. H. (2014). A new solver for the elastic normal contact problem using conjugate
+gradients, deflation, and an FFT-based preconditioner. J. Comput. Phys. 257, 333-351.
+doi:10.1016/j.jcp.2013.10.005
+"""
+from __future__ import annotations
+
+import attrs
+import numpy as np
+from .krylov import gmres
+from .operator import Circulant, convolve, invert
+
+POLONSKY_KEER = "Polonsky-Keer"
+#: Relative tolerance of the Krylov solves of the active-set method while the set still changes.
+LOOSE_KRYLOV = 1e-2
+#: Active-set updates allowed to one step of :func:`continued_active_set`, and its smallest step.
+HOMOTOPY_UPDATES = 15
+HOMOTOPY_SMALLEST = 1.0 / 64
+ACTIVE_SET = "active set"
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class GridSolution:
+    """The outcome of one grid solve.
+
+    Attributes
+    ----------
+    pressure : ndarray
+        Cell pressures ``p_k >= 0``.
+    penetration : float
+        ``Δ̃`` (given, or the load multiplier).
+    converged : bool
+    residual : float
+        Largest violation of the contact conditions (units of the profile amplitude).
+    iterations : int
+        Conjugate-gradient steps, or active-set updates.
+    applications : int
+        Products with ``A`` or its inverse (one FFT pair each).
+    solver : str
+        :data:`POLONSKY_KEER` or :data:`ACTIVE_SET`.
+    message : str
+    """
+
+    pressure: np.ndarray
+    penetration: float
+    converged: bool
+    residual: float
+    iterations: int
+    applications: int
+    solver: str
+    message: str
+
+
+def violation(gap: np.ndarray, loaded: np.ndarray) -> float:
+    """``max(max_C |g|, max_{∉C} -g, 0)``: the largest violation of the contact conditions."""
+    inside = np.max(np.abs(gap[loaded]), initial=0.0)
+    outside = -np.min(gap[~loaded], initial=0.0)
+    return float(max(inside, outside, 0.0))
+
+
+def circulant_diagonal(spectrum) -> float:
+    """The diagonal entry of a real symmetric circulant from its rfft eigenvalues (their mean
+    over all ``N`` modes)."""
+    v = np.asarray(spectrum).real
+    n = 2 * (len(v) - 1)
+    return float((v[0] + 2.0 * v[1:-1].sum() + v[-1]) / n)
+
+
+def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None, start=None,
+                  tolerance: float = 1e-10, max_iterations: int = 5000, preconditioner=None,
+                  workers: int = 1) -> GridSolution:
+    """Polonsky-Keer constrained conjugate gradients (symmetric operator).
+
+    Parameters
+    ----------
+    eigenvalues : ndarray
+        ``Λ_n`` of a symmetric circulant (imaginary parts are ignored).
+    heights : ndarray
+        ``r̃`` at the cell centres.
+    mean_pressure, penetration : float
+        Exactly one: ``p̃∞ > 0`` (load control) or ``Δ̃`` (penetration control).
+    start : ndarray, optional
+        Starting pressure (clipped at zero; rescaled to the load in load control). Default: the
+        uniform load, or the positive part of the interference in penetration control.
+    tolerance : float
+        Largest violation of the contact conditions to stop at (units of the amplitude).
+    preconditioner : ndarray, optional
+        Eigenvalues of a symmetric positive definite circulant ``M ≈ A⁻¹`` (the inverse
+        circulant): the search directions are built from ``M g`` restricted to the loaded cells
+        (Vollebregt 2014) instead of the gradient ``g``.
+    """
+    lam = np.asarray(eigenvalues).real.astype(complex)
+    pre = None if preconditioner is None else np.asarray(preconditioner).real.astype(complex)
+    # with a preconditioner (steps τ ~ 1), a cell that starts to carry load takes the pressure
+    # that would close its gap alone: -τ g/A_kk
+    diagonal = 1.0 if pre is None else 1.0 / circulant_diagonal(lam)
+    r = np.asarray(heights, dtype=float)
+    load = mean_pressure is not None
+    w = r - 1.0 if load else r - 1.0 + float(penetration)
+    if start is None:
+        p = np.full(r.size, float(mean_pressure)) if load else np.maximum(w, 0.0)
+    else:
+        p = np.maximum(np.asarray(start, dtype=float), 0.0)
+    if not p.any():
+        p[int(np.argmax(w))] = 1.0
+    if load:
+        p *= mean_pressure / p.mean()
+    t = np.zeros_like(p)
+    g_old, conjugate, shift, res = 1.0, 0.0, 0.0, np.inf
+    apps = 0
+    it = 0
+    message = f"no convergence in {max_iterations} iterations"
+    for it in range(max_iterations + 1):
+        s = p > 0
+        g = convolve(p, lam, workers) - w
+        apps += 1
+        if load:
+            shift = float(np.mean(g[s]))
+            g -= shift
+        res = violation(g, s)
+        if res <= tolerance:
+            message = f"converged in {it} iterations"
+            break
+        if it == max_iterations:
+            break
+        gs = g[s]
+        if pre is None:
+            z = g
+        else:
+            z = convolve(np.where(s, g, 0.0), pre, workers)
+            apps += 1
+            if load:
+                z -= np.mean(z[s])
+        big_g = float(gs @ z[s])
+        beta = conjugate * big_g / g_old if g_old > 0.0 else 0.0
+        t = np.where(s, z + beta * t, 0.0)
+        g_old = big_g
+        q = convolve(t, lam, workers)
+        apps += 1
+        if load:
+            q -= np.mean(q[s])
+        denom = float(q[s] @ t[s])
+        if not denom > 0.0:
+            # no descent within the loaded cells (none left, or a single one under load
+            # control): load the interpenetrating cells by their own stiffness and restart
+            outside = ~s & (g < 0.0)
+            if not outside.any():
+                message = f"search direction lost after {it} iterations"
+                break
+            p[outside] = -g[outside] / circulant_diagonal(lam)
+            if load:
+                p *= mean_pressure / p.mean()
+            conjugate = 0.0
+            continue
+        tau = float(gs @ t[s]) / denom
+        p = np.maximum(p - tau * t, 0.0)
+        overlap = (p == 0.0) & (g < 0.0)
+        if overlap.any():
+            p[overlap] -= tau * diagonal * g[overlap]
+        # a new loaded set restarts the conjugate directions: always when cells start to carry
+        # load (Polonsky-Keer), and with a preconditioner also when cells stop carrying it
+        changed = overlap.any() or (pre is not None and bool(np.any(s & (p == 0.0))))
+        conjugate = 0.0 if changed else 1.0
+        if load:
+            p *= mean_pressure / p.mean()
+    converged = res <= tolerance
+    delta = shift if load else float(penetration)
+    return GridSolution(pressure=p, penetration=delta, converged=converged, residual=res,
+                        iterations=it, applications=apps, solver=POLONSKY_KEER, message=message)
+
+
+def active_set(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
+               start_penetration: float | None = None, tolerance: float = 1e-10,
+               krylov_tolerance: float = 1e-10, max_iterations: int = 100, restart: int = 60,
+               workers: int = 1) -> GridSolution:
+    """Primal-dual active set with preconditioned GMRES (any operator).
+
+    Parameters
+    ----------
+    circulant : Circulant
+        Its ``eigenvalues`` and ``inverse``.
+    heights : ndarray
+        ``r̃`` at the cell centres.
+    mean_pressure, penetration : float
+        Exactly one (load or penetration control).
+    start : ndarray
+        Starting pressure: its loaded cells are the first active set.
+    start_penetration : float, optional
+        Starting ``Δ̃`` in load control (default: from the gaps of ``start``).
+    tolerance : float
+        Largest violation of the contact conditions accepted at a fixed active set (units of
+        the amplitude); a tighter Krylov solve is made when the first one falls short.
+    krylov_tolerance : float
+        Relative tolerance of GMRES.
+    """
+    lam = circulant.eigenvalues
+    inv = circulant.inverse
+    r = np.asarray(heights, dtype=float)
+    n = r.size
+    load = mean_pressure is not None
+    p = np.maximum(np.asarray(start, dtype=float), 0.0)
+    active = p > 0
+    if not active.any():
+        active[int(np.argmax(r))] = True
+    apps = [0]
+
+    def apply(v, spectrum=lam):
+        apps[0] += 1
+        return convolve(v, spectrum, workers)
+
+    if load:
+        if start_penetration is None:
+            u = apply(p)
+            delta = 1.0 + float(np.mean((u - r)[active]))
+        else:
+            delta = float(start_penetration)
+    else:
+        delta = float(penetration)
+    seen = set()
+    res = np.inf
+    # inexact Newton: Krylov solves to LOOSE_KRYLOV of their starting residual while the set
+    # changes, then to ``tight`` of the right-hand side on the final set
+    loose = LOOSE_KRYLOV if LOOSE_KRYLOV > krylov_tolerance else None
+    tight = krylov_tolerance
+    for it in range(1, max_iterations + 1):
+        idx = np.flatnonzero(active)
+        sol, info = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n, loose,
+                                      tight, restart)
+        p = np.zeros(n)
+        p[idx] = sol[:idx.size]
+        if load:
+            delta = float(sol[idx.size])
+        gap = apply(p) - (r - 1.0 + delta)
+        new = np.where(active, p > 0, gap < 0)
+        if np.array_equal(new, active):
+            if loose is not None:
+                loose = None                         # the set is found: solve on it tightly
+                continue
+            res = violation(gap, active)
+            if res <= tolerance and info == 0:
+                if load:
+                    p *= mean_pressure / p.mean()    # the load row to round-off, not to GMRES's
+                return GridSolution(pressure=p, penetration=delta, converged=True, residual=res,
+                                    iterations=it, applications=apps[0], solver=ACTIVE_SET,
+                                    message=f"active set fixed after {it} updates")
+            if tight <= 1e-15:
+                break
+            tight = max(tight * 1e-3, 1e-15)         # the Krylov solve fell short: tighten it
+            continue
+        key = new.tobytes()
+        if key in seen and loose is not None:        # a cycle of inexact solves: tighten them
+            loose = None
+            seen.clear()
+        elif key in seen:                            # a cycle: take half of the changes
+            flip = np.flatnonzero(new != active)
+            new = active.copy()
+            new[flip[::2]] = ~active[flip[::2]]
+        seen.add(key)
+        if not new.any():
+            new[int(np.argmax(r))] = True
+        active = new
+    p = np.maximum(p, 0.0)
+    gap = apply(p) - (r - 1.0 + delta)
+    res = violation(gap, p > 0)
+    return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
+                        iterations=max_iterations, applications=apps[0], solver=ACTIVE_SET,
+                        message=f"active set still changing after {max_iterations} updates"
+                        if res > tolerance else "Krylov solves did not converge")
+
+
+def continued_active_set(circulant, heights, *, mean_pressure=None, penetration=None,
+                         start=None, tolerance: float = 1e-10, krylov_tolerance: float = 1e-10,
+                         max_iterations: int = 100, restart: int = 60, workers: int = 1,
+                         presolve: float = 1e-6) -> GridSolution:
+    """The active-set method along ``A_t = (A + Aᵀ)/2 + t (A - Aᵀ)/2`` from ``t = 0`` to 1.
+
+    On a strongly non-symmetric operator (a large ``β`` at ``ζ`` of order one) the active set
+    can cycle from a poor start. Every ``A_t`` has the same positive definite symmetric part, so
+    each problem has one solution, which moves continuously with ``t``: the symmetric problem is
+    solved by Polonsky-Keer, then :func:`active_set` follows ``t``, trying the whole remaining
+    step first and halving it while the set does not settle within ``HOMOTOPY_UPDATES``.
+    """
+    lam = np.asarray(circulant.eigenvalues)
+    sym = lam.real.astype(complex)
+    first = polonsky_keer(sym, heights, mean_pressure=mean_pressure, penetration=penetration,
+                          start=start, tolerance=presolve, max_iterations=20 * max_iterations,
+                          preconditioner=invert(sym), workers=workers)
+    its, apps = first.iterations, first.applications
+    current, t, step = first, 0.0, 1.0
+    while True:
+        target = min(1.0, t + step)
+        spectrum = sym + 1j * target * lam.imag
+        op = Circulant(points=len(heights), eigenvalues=spectrum, inverse=invert(spectrum),
+                       symmetric=False)
+        sol = active_set(op, heights, mean_pressure=mean_pressure, penetration=penetration,
+                         start=current.pressure, start_penetration=current.penetration,
+                         tolerance=tolerance, krylov_tolerance=krylov_tolerance,
+                         max_iterations=min(max_iterations, HOMOTOPY_UPDATES), restart=restart,
+                         workers=workers)
+        its += sol.iterations
+        apps += sol.applications
+        if sol.converged:
+            current, t = sol, target
+            if t >= 1.0:
+                steps = "" if step == 1.0 else f" (continued from the symmetric part, last step " \
+                                               f"{step:.3g})"
+                return attrs.evolve(sol, iterations=its, applications=apps,
+                                    message=sol.message + steps)
+            continue
+        step *= 0.5
+        if step < HOMOTOPY_SMALLEST:
+            return attrs.evolve(sol, iterations=its, applications=apps,
+                                message=f"active set did not settle on the way from the "
+                                        f"symmetric operator (stopped at t = {t:.3g})")
+
+
+def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
+                      restart):
+    """GMRES on the active set ``idx``: ``A_CC p_C - Δ̃ 1 = r̃_C - 1`` with ``mean(p) = p̃∞``
+    (load control), or ``A_CC p_C = r̃_C - 1 + Δ̃``; returns ``([p_C, (Δ̃)], info)``."""
+    nc = idx.size
+    load = mean_pressure is not None
+    full = np.zeros(n)
+
+    def restrict(v, spectrum=None):
+        full[:] = 0.0
+        full[idx] = v
+        return apply(full, spectrum)[idx] if spectrum is not None else apply(full)[idx]
+
+    if load:
+        ones_pre = restrict(np.ones(nc), inverse)       # M 1, for the load row
+        mean_ones = float(ones_pre.mean())
+        target = mean_pressure * n / nc                 # mean over C of p_C
+
+        def matvec(v):
+            out = np.empty(nc + 1)
+            out[:nc] = restrict(v[:nc]) - v[nc]
+            out[nc] = v[:nc].mean()
+            return out
+
+        def precondition(v):
+            y = restrict(v[:nc], inverse)
+            d = (v[nc] - y.mean()) / mean_ones
+            return np.append(y + d * ones_pre, d)
+
+        rhs = np.append(heights[idx] - 1.0, target)
+        x0 = np.append(p[idx], delta)
+        size = nc + 1
+    else:
+        def matvec(v):
+            return restrict(v)
+
+        def precondition(v):
+            return restrict(v, inverse)
+
+        rhs = heights[idx] - 1.0 + delta
+        x0 = p[idx]
+        size = nc
+    # ``loose``: relative to the residual of the start (an inexact Newton step), never tighter
+    # than ``tight`` relative to the right-hand side
+    atol = tight * float(np.linalg.norm(rhs))
+    if loose is not None:
+        atol = max(atol, loose * float(np.linalg.norm(rhs - matvec(x0))))
+    sol, converged, _ = gmres(matvec, precondition, rhs, x0, atol, restart=restart)
+    return sol, 0 if converged else 1
