@@ -97,7 +97,9 @@ def solve_plan(problem, prepared) -> SolvePlan:
     if not method or method[0].stage != "method":
         method.insert(0, PlanStep(stage="method", choice=problem.method.name,
                                   reason="as asked (the scene's [method] or the problem's method)"))
-    steps = [_kernel_step(kernel), *_geometry_steps(problem, kernel), *method,
-             PlanStep(stage="fields", choice="pressure, displacement and gap only when asked",
-                      reason="fields=True / --fields")]
+    method = [step for i, step in enumerate(method) if i == 0 or step.stage != "method"]
+    if not any(step.stage == "fields" for step in method):
+        method.append(PlanStep(stage="fields", choice="pressure, displacement and gap only when "
+                               "asked", reason="fields=True / --fields"))
+    steps = [_kernel_step(kernel), *_geometry_steps(problem, kernel), *method]
     return SolvePlan(steps=tuple(steps))
