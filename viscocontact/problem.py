@@ -97,12 +97,14 @@ class ContactProblem:
 
     @classmethod
     def from_scene(cls, scene, **options) -> "ContactProblem":
-        """The problem a :class:`~viscocontact.scene.Scene` describes."""
+        """The problem a :class:`~viscocontact.scene.Scene` describes (``options`` set or
+        override fields, e.g. ``method=BEM()`` or ``discretization=...``)."""
         scene = scene.resolve()
-        return cls(profile=scene.profile, rheology=scene.rheology, kernel=scene.kernel,
-                   adhesion=scene.adhesion, solver=scene.solver, method=scene.method,
-                   mean_pressure=scene.load.mean_pressure, penetration=scene.load.penetration,
-                   zeta=scene.zeta, **options)
+        values = dict(profile=scene.profile, rheology=scene.rheology, kernel=scene.kernel,
+                      adhesion=scene.adhesion, solver=scene.solver, method=scene.method,
+                      mean_pressure=scene.load.mean_pressure,
+                      penetration=scene.load.penetration, zeta=scene.zeta)
+        return cls(**{**values, **options})
 
     def prepare(self) -> Prepared:
         """Kernel tables for this rheology and ζ, the normalised profile and its m2."""

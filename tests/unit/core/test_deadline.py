@@ -174,10 +174,11 @@ class CountingClock:
 def test_a_solve_stops_at_a_residual_evaluation(monkeypatch):
     """Every residual evaluation checks the limit: with a clock that advances one unit per
     check, a limit of 20 units stops a solve that needs many more evaluations, mid-way."""
+    from viscocontact.methods.bem import BEM
     from viscocontact.problem import ContactProblem, Discretization
     from viscocontact.scene import Scene
 
-    problem = ContactProblem.from_scene(Scene.from_toml(SCENE),
+    problem = ContactProblem.from_scene(Scene.from_toml(SCENE), method=BEM(),
                                         discretization=Discretization(elements=32))
     prepared = problem.prepare()
     free = problem.solve(prepared=prepared)
@@ -216,3 +217,20 @@ def test_deprecated_alarm_wrapper_maps_to_its_error():
                 expired(0.01)
                 check()
     assert outer.value.seconds == 0.01
+
+
+def test_a_spectral_solve_stops_at_an_iteration(monkeypatch):
+    """The spectral method checks the limit at every iteration of its grid solvers."""
+    from viscocontact.methods.spectral import Spectral
+    from viscocontact.problem import ContactProblem
+    from viscocontact.scene import Scene
+
+    problem = ContactProblem.from_scene(Scene.from_toml(SCENE), method=Spectral())
+    free = problem.solve()
+    assert free.converged and free.iterations > 20
+    clock = CountingClock()
+    monkeypatch.setattr(deadline_module, "time", types.SimpleNamespace(monotonic=clock.monotonic))
+    with pytest.raises(TimeLimitExceeded, match="time limit of 10 s"):
+        with deadline(10.0):
+            problem.solve()
+    assert 9 <= clock.now <= 11

@@ -337,10 +337,8 @@ class Spectral(SolutionMethod):
         else:
             target = first_points(prep.shape.wavelength, self.tolerance, self.max_points)
             final = self.max_points
-            before = getattr(initial, "extras", None) or {}
-            if before.get("method") == self.name and 0 < int(before.get("points", 0)) <= final:
-                # along a sweep the previous point's grid is the best first guess of this one's
-                target = max(target, int(before["points"]))
+            # a warm start contributes its contact set only (not the grid it was computed on):
+            # a result and its edges, as a study stores them, give the same answer
         # the ladder halves the target grid exactly down to its first grid: the one below the
         # target with a warm start, else the first at or below LADDER_START cells
         n = target // 2

@@ -37,6 +37,8 @@ from __future__ import annotations
 
 import attrs
 import numpy as np
+
+from ...deadline import check as check_deadline
 from .krylov import gmres
 from .operator import Circulant, convolve, invert
 
@@ -141,6 +143,7 @@ def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None,
     it = 0
     message = f"no convergence in {max_iterations} iterations"
     for it in range(max_iterations + 1):
+        check_deadline()                  # the cooperative time limit (viscocontact.deadline)
         s = p > 0
         g = convolve(p, lam, workers) - w
         apps += 1
@@ -253,6 +256,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     loose = LOOSE_KRYLOV if LOOSE_KRYLOV > krylov_tolerance else None
     tight = krylov_tolerance
     for it in range(1, max_iterations + 1):
+        check_deadline()
         idx = np.flatnonzero(active)
         sol, info = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n, loose,
                                       tight, restart)
