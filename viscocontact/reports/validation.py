@@ -1045,7 +1045,7 @@ def _figure_rough_area(plt, ra, plan, path):
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
     good = [w for w in ra["rows"] if w["converged"]]
     a.loglog([w["load"] for w in good], [w["bem"] for w in good], "k.", ms=4,
-             label="BEM (each seed)")
+             label="computed (each seed)")
     x = np.geomspace(min(w["load"] for w in good) / 1.5, max(w["load"] for w in good) * 1.5, 60)
     a.loglog(x, special.erf(math.sqrt(2) * x), "C0", label="Persson, line form")
     a.loglog(x, special.erf(x), "C0--", label="eq. 3.45 as printed")
@@ -1072,8 +1072,8 @@ def _figure_rough_area(plt, ra, plan, path):
     b.set_xscale("log")
     nice = [p for p in loads if round(p / 10 ** math.floor(math.log10(p)), 9) in (1, 2, 5)]
     _plain_ticks(b.xaxis, nice or loads)
-    b.set(xlabel="p̃∞", ylabel="A_theory / A_BEM",
-          title="ratio to the BEM: mean, band min–max over seeds")
+    b.set(xlabel="p̃∞", ylabel="A_theory / A_computed",
+          title="ratio to the computed area: mean, band min–max over seeds")
     b.legend(fontsize=7)
     _save(fig, path)
     plt.close(fig)
@@ -1094,7 +1094,7 @@ def _figure_friction(plt, fr, plan, path):
         c = f"C{i}"
         pts = [q for q in w["points"] if q["converged"]]
         b.semilogx([q["zeta"] for q in pts], [q["bem"] for q in pts], "o", color=c, ms=4,
-                   label=f"BEM seed {w['seed']}")
+                   label=f"computed seed {w['seed']}")
         b.semilogx(w["dense"], w["curve"], "-", color=c, lw=1, label=f"Persson seed {w['seed']}")
     b.set(xlim=(1e-4, 1e4), xlabel="ζ = q0Vτ", ylabel="μ/√m2",
           title=f"rough profile, p̃∞ = {fmt(plan.rough_friction_load)}")
