@@ -24,8 +24,7 @@ from .closed import ClosedContact, no_contact_result
 from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
 from .operator import OperatorCache, convolve, invert, power
-from .solvers import (GridSolution, active_set, continued_active_set, polonsky_keer,
-                      violation)
+from .solvers import GridSolution, active_set, polonsky_keer, violation
 
 #: Fewest cells ``points`` may ask for.
 MIN_POINTS = 64
@@ -412,18 +411,19 @@ class Spectral(SolutionMethod):
             return polonsky_keer(op.eigenvalues, grid.heights, start=start,
                                  max_iterations=self.max_iterations, preconditioner=op.inverse,
                                  **common)
-        options = dict(krylov_tolerance=self.krylov_tolerance, max_iterations=self.max_updates,
-                       **common)
-        if start is None:
-            return continued_active_set(op, grid.heights, presolve=PRESOLVE, **options)
+        its = apps = 0
+        if start is None:           # first grid: the solution for the symmetric part to start
+            sym = op.symmetric_part()
+            first = polonsky_keer(sym, grid.heights, max_iterations=self.max_iterations,
+                                  preconditioner=invert(sym),
+                                  **dict(common, tolerance=PRESOLVE))
+            start, start_penetration = first.pressure, first.penetration
+            its, apps = first.iterations, first.applications
         sol = active_set(op, grid.heights, start=start, start_penetration=start_penetration,
-                         **options)
-        if sol.converged:
-            return sol
-        again = continued_active_set(op, grid.heights, start=start, presolve=PRESOLVE, **options)
-        return attrs.evolve(again, iterations=again.iterations + sol.iterations,
-                            applications=again.applications + sol.applications,
-                            message=f"{sol.message}; then {again.message}")
+                         krylov_tolerance=self.krylov_tolerance, max_iterations=self.max_updates,
+                         **common)
+        return attrs.evolve(sol, iterations=sol.iterations + its,
+                            applications=sol.applications + apps)
 
     def _assemble(self, problem, prep, current: GridMeasures, iterations, applications, fields,
                   extras, closed) -> ContactResult:

@@ -39,7 +39,7 @@ from ...kernels.clausen import TWO_PI, cl2
 #: Aliases summed on each side for the non-closed-form part of the eigenvalues, at least; a
 #: coarse grid takes ``ALIAS_TERMS // N`` (its terms decay more slowly in ``l``, and are cheap).
 ALIASES = 8
-ALIAS_TERMS = 1 << 16
+ALIAS_TERMS = 1 << 14
 #: Aliases summed on each side for the loss weights (not alternating: an integral tail is added).
 DISSIPATION_ALIASES = 32
 #: ``max|Im Λ| <= SYMMETRIC·max|Λ|``: the operator is taken as symmetric (elastic, or ζ at a limit).

@@ -38,14 +38,17 @@ from __future__ import annotations
 import attrs
 import numpy as np
 from .krylov import gmres
-from .operator import Circulant, convolve, invert
+from .operator import convolve
 
 POLONSKY_KEER = "Polonsky-Keer"
 #: Relative tolerance of the Krylov solves of the active-set method while the set still changes.
 LOOSE_KRYLOV = 1e-2
-#: Active-set updates allowed to one step of :func:`continued_active_set`, and its smallest step.
-HOMOTOPY_UPDATES = 15
-HOMOTOPY_SMALLEST = 1.0 / 64
+#: Smallest fraction of an active-set step the line search tries, and the number of full steps
+#: before the line search is switched on (three to six settle a set from a nearby start).
+LINE_SEARCH_SMALLEST = 1.0 / 1024
+UNDAMPED_STEPS = 10
+#: A search direction ``t`` with ``tᵀAt <= FLAT·|t|²·max|Λ|`` has no stiffness.
+FLAT = 1e-12
 ACTIVE_SET = "active set"
 
 
@@ -136,6 +139,7 @@ def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None,
     if load:
         p *= mean_pressure / p.mean()
     t = np.zeros_like(p)
+    scale = float(np.max(np.abs(lam)))
     g_old, conjugate, shift, res = 1.0, 0.0, 0.0, np.inf
     apps = 0
     it = 0
@@ -170,6 +174,15 @@ def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None,
         if load:
             q -= np.mean(q[s])
         denom = float(q[s] @ t[s])
+        slope = float(gs @ t[s])
+        if not denom > FLAT * float(t[s] @ t[s]) * scale and slope > 0.0 and np.any(t[s] > 0):
+            # a direction without stiffness (the mean mode of an incompressible solid, with
+            # every cell loaded under a given penetration): the energy falls linearly along
+            # it, so go to the first cell it unloads
+            move = s & (t > 0)
+            p = np.maximum(p - float(np.min(p[move] / t[move])) * t, 0.0)
+            conjugate = 0.0
+            continue
         if not denom > 0.0:
             # no descent within the loaded cells (none left, or a single one under load
             # control): load the interpenetrating cells by their own stiffness and restart
@@ -203,7 +216,16 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
                start_penetration: float | None = None, tolerance: float = 1e-10,
                krylov_tolerance: float = 1e-10, max_iterations: int = 100, restart: int = 60,
                workers: int = 1) -> GridSolution:
-    """Primal-dual active set with preconditioned GMRES (any operator).
+    """Primal-dual active set (semismooth Newton) with preconditioned GMRES (any operator).
+
+    Each step takes the active set ``C = {p - c g > 0}`` (``c = 1/A_kk``, the pressure a unit
+    gap is worth) and solves the Newton system on it (:func:`_restricted_solve`): the gap
+    vanishes on ``C``, the pressure off it. The step to that solution is taken whole when it
+    reduces the merit ``|min(p, c g)|²`` and halved until it does otherwise (Armijo): a full step
+    is the plain primal-dual active-set update, which can cycle on a strongly non-symmetric
+    operator (a large ``β`` at ``ζ`` of order one), the damped one does not. The Krylov solves
+    are loose (:data:`LOOSE_KRYLOV` of their starting residual) until the set stops changing,
+    then tight. Converged when ``p >= 0`` and the contact conditions hold to ``tolerance``.
 
     Parameters
     ----------
@@ -214,134 +236,115 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     mean_pressure, penetration : float
         Exactly one (load or penetration control).
     start : ndarray
-        Starting pressure: its loaded cells are the first active set.
+        Starting pressure.
     start_penetration : float, optional
         Starting ``Δ̃`` in load control (default: from the gaps of ``start``).
     tolerance : float
-        Largest violation of the contact conditions accepted at a fixed active set (units of
-        the amplitude); a tighter Krylov solve is made when the first one falls short.
+        Largest violation of the contact conditions (units of the amplitude).
     krylov_tolerance : float
-        Relative tolerance of GMRES.
+        Relative tolerance of the tight GMRES solves.
     """
     lam = circulant.eigenvalues
     inv = circulant.inverse
     r = np.asarray(heights, dtype=float)
     n = r.size
     load = mean_pressure is not None
-    p = np.maximum(np.asarray(start, dtype=float), 0.0)
-    active = p > 0
-    if not active.any():
-        active[int(np.argmax(r))] = True
     apps = [0]
 
     def apply(v, spectrum=lam):
         apps[0] += 1
         return convolve(v, spectrum, workers)
 
+    stiffness = 1.0 / circulant_diagonal(lam.real)     # pressure that a unit gap is worth
+    singular_when_closed = not load and lam[0] == 0
+    p = np.maximum(np.asarray(start, dtype=float), 0.0)
+    if not p.any():
+        p[int(np.argmax(r))] = 1.0
     if load:
-        if start_penetration is None:
-            u = apply(p)
-            delta = 1.0 + float(np.mean((u - r)[active]))
-        else:
-            delta = float(start_penetration)
-    else:
+        p *= mean_pressure / p.mean()
+    u = apply(p)
+    if not load:
         delta = float(penetration)
-    seen = set()
-    res = np.inf
-    # inexact Newton: Krylov solves to LOOSE_KRYLOV of their starting residual while the set
-    # changes, then to ``tight`` of the right-hand side on the final set
+    elif start_penetration is None:
+        delta = 1.0 + float(np.mean((u - r)[p > 0]))
+    else:
+        delta = float(start_penetration)
+    g = u - (r - 1.0 + delta)
+
+    def merit(pressure, gap):
+        m = np.minimum(pressure, stiffness * gap)
+        return float(m @ m)
+
     loose = LOOSE_KRYLOV if LOOSE_KRYLOV > krylov_tolerance else None
     tight = krylov_tolerance
+    damped = False
+    floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
+    previous = None
+    seen = set()
+    res = np.inf
     for it in range(1, max_iterations + 1):
+        # the first set is the start's loaded cells (a warm start gives a set, not a solution)
+        active = p > 0 if it == 1 else p - stiffness * g > 0
+        if not active.any():
+            active[int(np.argmax(r))] = True
+        if singular_when_closed and active.all():
+            # A without its mean mode (c0 = 0) is singular on the whole grid, and under a given
+            # penetration below closure some cell has a gap: keep the least loaded one out
+            active[int(np.argmin(p - stiffness * g))] = False
+        key = active.tobytes()
+        if it > UNDAMPED_STEPS and not damped:       # slow to settle: damp the steps
+            damped, loose = True, None
+        if key in seen and not np.array_equal(active, previous):
+            if loose is not None:                    # a cycle of inexact steps: tighten them
+                loose = None
+            else:                                    # a cycle of Newton steps: damp them
+                damped = True
+            seen.clear()
+        seen.add(key)
         idx = np.flatnonzero(active)
         sol, info = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n, loose,
                                       tight, restart)
-        p = np.zeros(n)
-        p[idx] = sol[:idx.size]
-        if load:
-            delta = float(sol[idx.size])
-        gap = apply(p) - (r - 1.0 + delta)
-        new = np.where(active, p > 0, gap < 0)
-        if np.array_equal(new, active):
+        target = np.zeros(n)
+        target[idx] = sol[:idx.size]
+        step_p = target - p
+        step_d = float(sol[idx.size]) - delta if load else 0.0
+        step_g = apply(step_p) - step_d
+        s = 1.0
+        if damped:
+            before = merit(p, g)
+            while s > LINE_SEARCH_SMALLEST:
+                after = merit(p + s * step_p, g + s * step_g)
+                if after <= (1.0 - 1e-4 * s) * before or after <= floor:
+                    break
+                s *= 0.5
+        p = p + s * step_p
+        g = g + s * step_g
+        delta += s * step_d
+        res = violation(g, p > 0)
+        if s == 1.0 and np.array_equal(active, previous):
             if loose is not None:
-                loose = None                         # the set is found: solve on it tightly
-                continue
-            res = violation(gap, active)
-            if res <= tolerance and info == 0:
-                if load:
-                    p *= mean_pressure / p.mean()    # the load row to round-off, not to GMRES's
+                loose = None              # the set is found: solve on it tightly next
+            elif res > tolerance and tight > 1e-15:
+                tight = max(1e-3 * tight, 1e-15)  # the Krylov solve falls short: tighten it
+        previous = active
+        if loose is None and info == 0 and res <= tolerance and \
+                np.min(p) >= -tolerance * stiffness:
+            p = np.maximum(p, 0.0)
+            if load:
+                p *= mean_pressure / p.mean()    # the load row to round-off, not to GMRES's
+            g = apply(p) - (r - 1.0 + delta)
+            res = violation(g, p > 0)
+            if res <= 2.0 * tolerance:
+                how = ", damped" if damped else ""
                 return GridSolution(pressure=p, penetration=delta, converged=True, residual=res,
                                     iterations=it, applications=apps[0], solver=ACTIVE_SET,
-                                    message=f"active set fixed after {it} updates")
-            if tight <= 1e-15:
-                break
-            tight = max(tight * 1e-3, 1e-15)         # the Krylov solve fell short: tighten it
-            continue
-        key = new.tobytes()
-        if key in seen and loose is not None:        # a cycle of inexact solves: tighten them
-            loose = None
-            seen.clear()
-        elif key in seen:                            # a cycle: take half of the changes
-            flip = np.flatnonzero(new != active)
-            new = active.copy()
-            new[flip[::2]] = ~active[flip[::2]]
-        seen.add(key)
-        if not new.any():
-            new[int(np.argmax(r))] = True
-        active = new
+                                    message=f"converged in {it} active-set steps{how}")
     p = np.maximum(p, 0.0)
-    gap = apply(p) - (r - 1.0 + delta)
-    res = violation(gap, p > 0)
+    g = apply(p) - (r - 1.0 + delta)
+    res = violation(g, p > 0)
     return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
                         iterations=max_iterations, applications=apps[0], solver=ACTIVE_SET,
-                        message=f"active set still changing after {max_iterations} updates"
-                        if res > tolerance else "Krylov solves did not converge")
-
-
-def continued_active_set(circulant, heights, *, mean_pressure=None, penetration=None,
-                         start=None, tolerance: float = 1e-10, krylov_tolerance: float = 1e-10,
-                         max_iterations: int = 100, restart: int = 60, workers: int = 1,
-                         presolve: float = 1e-6) -> GridSolution:
-    """The active-set method along ``A_t = (A + Aᵀ)/2 + t (A - Aᵀ)/2`` from ``t = 0`` to 1.
-
-    On a strongly non-symmetric operator (a large ``β`` at ``ζ`` of order one) the active set
-    can cycle from a poor start. Every ``A_t`` has the same positive definite symmetric part, so
-    each problem has one solution, which moves continuously with ``t``: the symmetric problem is
-    solved by Polonsky-Keer, then :func:`active_set` follows ``t``, trying the whole remaining
-    step first and halving it while the set does not settle within ``HOMOTOPY_UPDATES``.
-    """
-    lam = np.asarray(circulant.eigenvalues)
-    sym = lam.real.astype(complex)
-    first = polonsky_keer(sym, heights, mean_pressure=mean_pressure, penetration=penetration,
-                          start=start, tolerance=presolve, max_iterations=20 * max_iterations,
-                          preconditioner=invert(sym), workers=workers)
-    its, apps = first.iterations, first.applications
-    current, t, step = first, 0.0, 1.0
-    while True:
-        target = min(1.0, t + step)
-        spectrum = sym + 1j * target * lam.imag
-        op = Circulant(points=len(heights), eigenvalues=spectrum, inverse=invert(spectrum),
-                       symmetric=False)
-        sol = active_set(op, heights, mean_pressure=mean_pressure, penetration=penetration,
-                         start=current.pressure, start_penetration=current.penetration,
-                         tolerance=tolerance, krylov_tolerance=krylov_tolerance,
-                         max_iterations=min(max_iterations, HOMOTOPY_UPDATES), restart=restart,
-                         workers=workers)
-        its += sol.iterations
-        apps += sol.applications
-        if sol.converged:
-            current, t = sol, target
-            if t >= 1.0:
-                steps = "" if step == 1.0 else f" (continued from the symmetric part, last step " \
-                                               f"{step:.3g})"
-                return attrs.evolve(sol, iterations=its, applications=apps,
-                                    message=sol.message + steps)
-            continue
-        step *= 0.5
-        if step < HOMOTOPY_SMALLEST:
-            return attrs.evolve(sol, iterations=its, applications=apps,
-                                message=f"active set did not settle on the way from the "
-                                        f"symmetric operator (stopped at t = {t:.3g})")
+                        message=f"no convergence in {max_iterations} active-set steps")
 
 
 def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
