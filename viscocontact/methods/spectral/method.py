@@ -1,10 +1,11 @@
 r"""The :class:`Spectral` solution method: grids, solvers and the error estimate put together.
 
-A solve runs a ladder of grids ``N/2, N, 2N, ...``: each grid starts from the solution on the
-previous one (or, on the first, from a warm start or from scratch); after every grid but the first
-the change of ``Ã`` and ``μ`` from the previous grid gives a Richardson estimate of the error of the
-finer one. The ladder stops when the estimate is within the tolerance or at ``max_points``.
-"""
+A solve runs a ladder of grids, each twice as fine as the one before and starting from its
+solution (:func:`next_start`): from at most :data:`LADDER_START` cells (or, with a warm start,
+from half the first trusted grid) up to the first trusted grid (:func:`first_points`), then on
+until the estimate (:func:`changes`, :func:`estimate`) is within the tolerance or the next grid
+would exceed ``max_points``. Closed contact and no contact are answered without a grid
+(:mod:`.closed`)."""
 from __future__ import annotations
 
 import math

@@ -41,7 +41,7 @@ from ...kernels.clausen import TWO_PI, cl2
 ALIASES = 8
 ALIAS_TERMS = 1 << 14
 #: Aliases summed on each side for the loss weights (not alternating: an integral tail is added).
-DISSIPATION_ALIASES = 32
+DISSIPATION_ALIASES = 4
 #: ``max|Im Λ| <= SYMMETRIC·max|Λ|``: the operator is taken as symmetric (elastic, or ζ at a limit).
 SYMMETRIC = 1e-12
 
