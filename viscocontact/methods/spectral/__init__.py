@@ -68,9 +68,11 @@ length spans a few cells), so the estimate assumes order 1: the change between t
 grids, and at least half the change between the two before. It was at or above the error in
 every case above.
 
-Speed (``benchmarks/spectral.py``, same process, alternating, median of 3 runs, five seeds):
-at the default tolerance the thesis rough point takes 0.3-0.5 times the time of the FFT peer at
-8192 cells (elastic) and 0.4-0.6 times (β = 10, ζ = 1e-2), from scratch (profile and kernel
+Speed (``benchmarks/spectral.py``, same process, alternating, median of 3 runs, seeds 0-4, on
+the 2-core machine shared with other jobs): at the default tolerance the thesis rough point
+takes 0.41 times the time of the FFT peer at 8192 cells, median over the seeds (0.29-0.76 per
+seed; the slowest refines to 32768 cells), elastic, and 0.51 times (0.38-0.53), β = 10 at
+ζ = 1e-2: 44 ms against 107 ms and 64 ms against 126 ms, from scratch (profile and kernel
 preparation included). Where a cold solve spends its time (cProfile, five seeds): elastic,
 about 40 % in the FFT products, 25 % in the rest of the conjugate-gradient steps, 10 % in
 :meth:`ContactProblem.prepare` (peak, statistics), 8 % locating the edges; viscoelastic, 35 % in

@@ -66,8 +66,6 @@ def _even_points(lo: int, hi: int):
 
     def check(inst, attribute, value):
         name = f"{type(inst).__name__}.{attribute.name}"
-        if value is None and attribute.name == "points":
-            return
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
             raise ValidationError(name, value, desc)
         if value % 2 or not lo <= value <= hi:
@@ -187,12 +185,28 @@ class Spectral(SolutionMethod):
         Conjugate-gradient steps per grid (Polonsky-Keer).
     max_updates : int
         Active-set updates per grid.
+
+    Examples
+    --------
+    >>> from viscocontact.problem import ContactProblem
+    >>> from viscocontact.profiles import Sinusoid
+    >>> from viscocontact.reference import westergaard_area
+    >>> from viscocontact.rheology import Elastic
+    >>> from viscocontact.solvers import Bisection
+    >>> prob = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(),
+    ...                       solver=Bisection(), mean_pressure=0.3)
+    >>> r = Spectral().solve(prob)
+    >>> r.extras["method"], r.extras["tolerance_met"], r.n_contacts
+    ('spectral', True, 1)
+    >>> bool(abs(r.area / westergaard_area(0.3) - 1) < 1e-3)
+    True
     """
 
     name: ClassVar[str] = "spectral"
 
     tolerance: float = attrs.field(default=1e-3, validator=in_range(1e-6, 0.1))
-    points: int | None = attrs.field(default=None, validator=_even_points(MIN_POINTS, MAX_POINTS))
+    points: int | None = attrs.field(
+        default=None, validator=attrs.validators.optional(_even_points(MIN_POINTS, MAX_POINTS)))
     max_points: int = attrs.field(default=1 << 17, validator=_even_points(MIN_POINTS, MAX_POINTS))
     workers: int | None = attrs.field(
         default=None, validator=attrs.validators.optional(int_range(1, 1024)))
@@ -310,12 +324,16 @@ class Spectral(SolutionMethod):
                 PlanStep(stage="control", choice=control,
                          reason="the closed contact is returned directly when it carries the "
                                 "load without tension"),
-                PlanStep(stage="edges", choice="sub-cell edges from the pressure ratio of the "
-                                               "two outermost loaded cells",
-                         reason="universal square-root edge field (adhesionless)"),
+                PlanStep(stage="edges", choice="sub-cell edges: left ones from the pressures of "
+                                               "the two outermost loaded cells, right ones from "
+                                               "the gaps of the two first free cells",
+                         reason="universal square-root edge field (adhesionless); the memory "
+                                "of a viscoelastic solid spoils the other side"),
                 PlanStep(stage="estimate",
-                         choice=f"Richardson on Ã and μ between N/2 and N (order {ORDER:g})",
-                         reason=f"tolerance {self.tolerance:g}"),
+                         choice=f"Richardson on Ã and μ between N/2 and N (order {ORDER:g}), "
+                                "at least half the change one level down",
+                         reason=f"tolerance {self.tolerance:g}; μ relative to max(|μ|, "
+                                f"{self.friction_floor:g}·√m2)"),
                 PlanStep(stage="reuse", choice="eigenvalues once per (kernel, N) in "
                                                "SpectralPrepared (pass prepared= along a sweep)",
                          reason="they depend on rheology, kernel and ζ only"),
