@@ -157,7 +157,7 @@ def first_points(wavelength: float | None, tolerance: float, max_points: int) ->
 
 @attrs.frozen(kw_only=True)
 class Spectral(SolutionMethod):
-    r"""Uniform-grid spectral method for adhesionless scenes (see :mod:`viscocontact.methods.spectral`).
+    r"""Uniform-grid spectral method for adhesionless scenes (:mod:`viscocontact.methods.spectral`).
 
     Parameters
     ----------

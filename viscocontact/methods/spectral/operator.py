@@ -20,8 +20,8 @@ with ζ from 1e-6 to 0.1 on the half-plane and a confined layer, 32 to 8192 cell
 checks 1e-7). It is skipped when the multiplier equals ``K_s`` (elastic half-plane).
 
 The power that a pressure field feeds into the solid per unit sliding speed is
-``-∫ p u' dx = 2π Σ_{m≠0} Im[S_{|m|} K(|m|)] |p̂_m|²`` (``docs/kernels.md``), for the piecewise-constant
-field ``Σ_n |P_n|² D_n`` with ``P_n`` the discrete Fourier coefficients and the weights
+``-∫ p u' dx = 2π Σ_{m≠0} Im[S_{|m|} K(|m|)] |p̂_m|²`` (``docs/kernels.md``), for the
+piecewise-constant field ``Σ_n |P_n|² D_n`` with ``P_n`` the discrete Fourier coefficients and the weights
 
 .. math:: D_n = \sum_{l} \mathrm{Im}\big[S K\big](|n + lN|)\,\mathrm{sinc}^2\big((n + lN)h/2\big),
 

@@ -390,7 +390,6 @@ def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, 
 
         rhs = np.append(heights[idx] - 1.0, target)
         x0 = np.append(p[idx], delta)
-        size = nc + 1
     else:
         def matvec(v):
             return restrict(v)
@@ -400,7 +399,6 @@ def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, 
 
         rhs = heights[idx] - 1.0 + delta
         x0 = p[idx]
-        size = nc
     # ``loose``: relative to the residual of the start (an inexact Newton step), never tighter
     # than ``tight`` relative to the right-hand side
     atol = tight * float(np.linalg.norm(rhs))
