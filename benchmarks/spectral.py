@@ -3,6 +3,7 @@
     python benchmarks/spectral.py [--seeds 0,1,2,3,4] [--repeats 3] [--reference]
     python benchmarks/spectral.py --orders          # observed convergence orders of Ã and μ
     python benchmarks/spectral.py --profile         # where a solve spends its time (cProfile)
+    python benchmarks/spectral.py --betas           # robustness of the active set against β
 
 The acceptance case: ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=s)`` on a
 half-plane at ``p̃∞ = 0.25``, elastic and standard linear solid β = 10 at ζ = 1e-2.
@@ -85,6 +86,8 @@ def side_by_side(seeds, repeats, reference):
                     f"{(spec.friction - peer.friction) / scale:+9.1e}")
             if reference:
                 ref = Spectral(points=REFERENCE_POINTS).solve(prob)
+                if not ref.converged:
+                    print(f"   reference not converged: {ref.message}")
                 scale = friction_scale(ref.friction, profile)
                 line += (f"  {(spec.area - ref.area) / ref.area:+9.1e}  "
                          f"{(peer.area - ref.area) / ref.area:+9.1e}  "
@@ -120,6 +123,8 @@ def orders():
         profile = rough(0)
         prob = problem(profile, rheology, zeta)
         ref = Spectral(points=REFERENCE_POINTS).solve(prob)
+        if not ref.converged:
+            print(f"   reference not converged: {ref.message}")
         scale = friction_scale(ref.friction, profile)
         res = [Spectral(points=n).solve(prob) for n in sizes]
         ea = [(r.area - ref.area) / ref.area for r in res]
@@ -129,6 +134,23 @@ def orders():
         print(f"  {' ' * len(label)}  μ " + " ".join(f"{e:+.1e}" for e in em)
               + f"   order {_order(sizes, em):.2f}")
     print("  cells: " + " ".join(f"{n:>8d}" for n in sizes))
+
+
+def betas():
+    """Convergence of the active-set method as the operator grows less symmetric: a standard
+    linear solid with β from 10 to 100 (``tan δ`` up to ``(β - 1)/(2√β)``), seeds 0 and 1,
+    ζ = 0.1, 1, 10 and p̃∞ = 0.05, 0.25, 0.6 at the default tolerance."""
+    for beta in (10.0, 20.0, 30.0, 50.0, 100.0):
+        runs = []
+        for seed in (0, 1):
+            for zeta in (0.1, 1.0, 10.0):
+                for load in (0.05, 0.25, 0.6):
+                    prob = problem(rough(seed), StandardLinearSolid(beta=beta), zeta, load)
+                    start = time.perf_counter()
+                    res = Spectral().solve(prob)
+                    runs.append((res.converged, time.perf_counter() - start))
+        print(f"β = {beta:5g} (tan δ max {(beta - 1) / (2 * math.sqrt(beta)):.2f}): converged "
+              f"{sum(c for c, _ in runs)} of {len(runs)}, slowest {max(t for _, t in runs):.2f} s")
 
 
 def profile_solves():
@@ -151,6 +173,7 @@ def main(argv=None) -> int:
     ap.add_argument("--reference", action="store_true")
     ap.add_argument("--orders", action="store_true")
     ap.add_argument("--profile", action="store_true")
+    ap.add_argument("--betas", action="store_true")
     args = ap.parse_args(argv)
     if args.repeats < 1:
         print(f"--repeats = {args.repeats} is not allowed: expected an integer >= 1",
@@ -160,6 +183,8 @@ def main(argv=None) -> int:
         orders()
     elif args.profile:
         profile_solves()
+    elif args.betas:
+        betas()
     else:
         side_by_side([int(s) for s in args.seeds.split(",")], args.repeats, args.reference)
     return 0

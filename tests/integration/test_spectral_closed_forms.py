@@ -11,7 +11,7 @@ from viscocontact.methods.spectral import Spectral
 from viscocontact.problem import ContactProblem
 from viscocontact.profiles import SelfAffineProfile, Sinusoid
 from viscocontact.reference import westergaard_area, westergaard_penetration
-from viscocontact.rheology import Elastic, StandardLinearSolid
+from viscocontact.rheology import Elastic, PronySeries, StandardLinearSolid
 from viscocontact.solvers import Broyden
 
 TOL = Spectral().tolerance
@@ -103,6 +103,16 @@ def test_viscoelastic_scene_against_the_bem(profile):
     assert s.friction == pytest.approx(b.friction, rel=2 * TOL)
     assert s.penetration == pytest.approx(b.penetration, rel=2 * TOL)
     assert np.abs(s.edges - b.edges).max() <= 2 * TOL * s.area
+
+
+def test_prony_series_against_the_bem():
+    """Three Maxwell arms, one memory length each inside the dissipative band."""
+    prony = PronySeries(relaxed_modulus=1.0, moduli=[2.0, 5.0, 3.0], times=[1e-2, 0.3, 10.0])
+    prob = _problem(_small_rough(2), prony, 1.0, mean_pressure=0.3)
+    s, b = Spectral().solve(prob), prob.solve()
+    assert s.converged and b.converged and s.n_contacts == b.n_contacts
+    assert s.area == pytest.approx(b.area, rel=2 * TOL)
+    assert s.friction == pytest.approx(b.friction, rel=2 * TOL)
 
 
 def test_penetration_is_the_bems():

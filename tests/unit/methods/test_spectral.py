@@ -23,7 +23,7 @@ from viscocontact.problem import ContactProblem
 from viscocontact.profiles import SelfAffineProfile, Sinusoid
 from viscocontact.reference import westergaard_area
 from viscocontact.result import SolveStatus
-from viscocontact.rheology import Elastic, StandardLinearSolid
+from viscocontact.rheology import Elastic, PronySeries, StandardLinearSolid
 from viscocontact.solvers import Bisection
 
 SLS = StandardLinearSolid(beta=10.0)
@@ -303,7 +303,15 @@ def scenes(draw):
                                     rms=draw(st.floats(1e-3, 0.1)),
                                     seed=draw(st.integers(0, 2**32 - 1)))
     zeta = draw(st.one_of(st.just(0.0), st.floats(-3.0, 2.0).map(lambda e: 10.0**e)))
-    rheology = StandardLinearSolid(beta=draw(st.floats(1.5, 100.0))) if zeta else Elastic()
+    if not zeta:
+        rheology = Elastic()
+    elif draw(st.booleans()):
+        rheology = StandardLinearSolid(beta=draw(st.floats(1.5, 100.0)))
+    else:                                  # three arms over four decades of relaxation time
+        rheology = PronySeries(relaxed_modulus=1.0,
+                               moduli=draw(st.lists(st.floats(0.1, 30.0), min_size=3,
+                                                    max_size=3)),
+                               times=[1e-2, 1.0, 1e2])
     kernel = draw(st.sampled_from([HalfPlane(), ConfinedLayer(thickness=1.0, poisson=0.3)]))
     control = draw(st.sampled_from(["mean_pressure", "penetration"]))
     value = draw(st.floats(0.02, 0.9))

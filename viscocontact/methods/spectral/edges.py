@@ -43,8 +43,8 @@ THETA_MIN = float(PRESSURE_MAP[-1])
 
 
 def edge_offset(ratio) -> np.ndarray:
-    """Offset ``θ`` (cells) of an edge beyond the outermost loaded centre, from ``ρ = p_out/p_next``;
-    clipped to the one-cell range ``[THETA_MIN, THETA_MIN + 1]``."""
+    """Offset ``θ`` (cells) of an edge beyond the outermost loaded centre, from
+    ``ρ = p_out/p_next``; clipped to the one-cell range ``[THETA_MIN, THETA_MIN + 1]``."""
     rho = np.clip(np.asarray(ratio, dtype=float), 0.0, None)
     return np.clip(np.polyval(PRESSURE_MAP, rho), THETA_MIN, THETA_MIN + 1.0)
 

@@ -1,10 +1,11 @@
 r"""The :class:`Spectral` solution method: grids, solvers and the error estimate put together.
 
-A solve runs a ladder of grids ``N/2, N, 2N, ...``: each grid starts from the solution on the
-previous one (or, on the first, from a warm start or from scratch); after every grid but the first
-the change of ``Ã`` and ``μ`` from the previous grid gives a Richardson estimate of the error of the
-finer one. The ladder stops when the estimate is within the tolerance or at ``max_points``.
-"""
+A solve runs a ladder of grids, each twice as fine as the one before and starting from its
+solution (:func:`next_start`): from at most :data:`LADDER_START` cells (or, with a warm start,
+from half the first trusted grid) up to the first trusted grid (:func:`first_points`), then on
+until the estimate (:func:`changes`, :func:`estimate`) is within the tolerance or the next grid
+would exceed ``max_points``. Closed contact and no contact are answered without a grid
+(:mod:`.closed`)."""
 from __future__ import annotations
 
 import math
@@ -24,8 +25,7 @@ from .closed import ClosedContact, no_contact_result
 from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
 from .operator import OperatorCache, convolve, invert, power
-from .solvers import (GridSolution, active_set, continued_active_set, polonsky_keer,
-                      violation)
+from .solvers import GridSolution, active_set, polonsky_keer, violation
 
 #: Fewest cells ``points`` may ask for.
 MIN_POINTS = 64
@@ -66,8 +66,6 @@ def _even_points(lo: int, hi: int):
 
     def check(inst, attribute, value):
         name = f"{type(inst).__name__}.{attribute.name}"
-        if value is None and attribute.name == "points":
-            return
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
             raise ValidationError(name, value, desc)
         if value % 2 or not lo <= value <= hi:
@@ -159,7 +157,7 @@ def first_points(wavelength: float | None, tolerance: float, max_points: int) ->
 
 @attrs.frozen(kw_only=True)
 class Spectral(SolutionMethod):
-    r"""Uniform-grid spectral method for adhesionless scenes (see :mod:`viscocontact.methods.spectral`).
+    r"""Uniform-grid spectral method for adhesionless scenes (:mod:`viscocontact.methods.spectral`).
 
     Parameters
     ----------
@@ -187,12 +185,28 @@ class Spectral(SolutionMethod):
         Conjugate-gradient steps per grid (Polonsky-Keer).
     max_updates : int
         Active-set updates per grid.
+
+    Examples
+    --------
+    >>> from viscocontact.problem import ContactProblem
+    >>> from viscocontact.profiles import Sinusoid
+    >>> from viscocontact.reference import westergaard_area
+    >>> from viscocontact.rheology import Elastic
+    >>> from viscocontact.solvers import Bisection
+    >>> prob = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(),
+    ...                       solver=Bisection(), mean_pressure=0.3)
+    >>> r = Spectral().solve(prob)
+    >>> r.extras["method"], r.extras["tolerance_met"], r.n_contacts
+    ('spectral', True, 1)
+    >>> bool(abs(r.area / westergaard_area(0.3) - 1) < 1e-3)
+    True
     """
 
     name: ClassVar[str] = "spectral"
 
     tolerance: float = attrs.field(default=1e-3, validator=in_range(1e-6, 0.1))
-    points: int | None = attrs.field(default=None, validator=_even_points(MIN_POINTS, MAX_POINTS))
+    points: int | None = attrs.field(
+        default=None, validator=attrs.validators.optional(_even_points(MIN_POINTS, MAX_POINTS)))
     max_points: int = attrs.field(default=1 << 17, validator=_even_points(MIN_POINTS, MAX_POINTS))
     workers: int | None = attrs.field(
         default=None, validator=attrs.validators.optional(int_range(1, 1024)))
@@ -310,12 +324,16 @@ class Spectral(SolutionMethod):
                 PlanStep(stage="control", choice=control,
                          reason="the closed contact is returned directly when it carries the "
                                 "load without tension"),
-                PlanStep(stage="edges", choice="sub-cell edges from the pressure ratio of the "
-                                               "two outermost loaded cells",
-                         reason="universal square-root edge field (adhesionless)"),
+                PlanStep(stage="edges", choice="sub-cell edges: left ones from the pressures of "
+                                               "the two outermost loaded cells, right ones from "
+                                               "the gaps of the two first free cells",
+                         reason="universal square-root edge field (adhesionless); the memory "
+                                "of a viscoelastic solid spoils the other side"),
                 PlanStep(stage="estimate",
-                         choice=f"Richardson on Ã and μ between N/2 and N (order {ORDER:g})",
-                         reason=f"tolerance {self.tolerance:g}"),
+                         choice=f"Richardson on Ã and μ between N/2 and N (order {ORDER:g}), "
+                                "at least half the change one level down",
+                         reason=f"tolerance {self.tolerance:g}; μ relative to max(|μ|, "
+                                f"{self.friction_floor:g}·√m2)"),
                 PlanStep(stage="reuse", choice="eigenvalues once per (kernel, N) in "
                                                "SpectralPrepared (pass prepared= along a sweep)",
                          reason="they depend on rheology, kernel and ζ only"),
@@ -414,18 +432,19 @@ class Spectral(SolutionMethod):
             return polonsky_keer(op.eigenvalues, grid.heights, start=start,
                                  max_iterations=self.max_iterations, preconditioner=op.inverse,
                                  **common)
-        options = dict(krylov_tolerance=self.krylov_tolerance, max_iterations=self.max_updates,
-                       **common)
-        if start is None:
-            return continued_active_set(op, grid.heights, presolve=PRESOLVE, **options)
+        its = apps = 0
+        if start is None:           # first grid: the solution for the symmetric part to start
+            sym = op.symmetric_part()
+            first = polonsky_keer(sym, grid.heights, max_iterations=self.max_iterations,
+                                  preconditioner=invert(sym),
+                                  **dict(common, tolerance=PRESOLVE))
+            start, start_penetration = first.pressure, first.penetration
+            its, apps = first.iterations, first.applications
         sol = active_set(op, grid.heights, start=start, start_penetration=start_penetration,
-                         **options)
-        if sol.converged:
-            return sol
-        again = continued_active_set(op, grid.heights, start=start, presolve=PRESOLVE, **options)
-        return attrs.evolve(again, iterations=again.iterations + sol.iterations,
-                            applications=again.applications + sol.applications,
-                            message=f"{sol.message}; then {again.message}")
+                         krylov_tolerance=self.krylov_tolerance, max_iterations=self.max_updates,
+                         **common)
+        return attrs.evolve(sol, iterations=sol.iterations + its,
+                            applications=sol.applications + apps)
 
     def _assemble(self, problem, prep, current: GridMeasures, iterations, applications, fields,
                   extras, closed) -> ContactResult:
