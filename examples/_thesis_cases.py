@@ -159,11 +159,11 @@ def sweep_family(profile: str, control: str, args) -> list:
     return out
 
 
-#: Profiles whose adhesionless curves are a sweep of their own, solved with the adhesionless
-#: default solver (bisection), instead of the adhesive sweep's twin, which keeps the adhesive
-#: scene's solver: with Broyden the rough adhesionless point at ζ = 1e-2 ran 19 minutes and failed
-#: ("contact set still changing after 200 restarts"), where bisection converges in seconds
-#: (docs/validation.md §4).
+#: Profiles whose adhesionless curves are a sweep of their own instead of the adhesive sweep's
+#: twin. Both go through the planned method (``[method] kind = "auto"``: the spectral method for
+#: an adhesionless scene, whatever its solver); the separate sweep dates from when the twin kept
+#: the adhesive scene's Broyden solver in the BEM, where the rough adhesionless point at
+#: ζ = 1e-2 ran 19 minutes and failed, and it keeps the study files' names.
 SEPARATE_ADHESIONLESS = ("rough",)
 
 

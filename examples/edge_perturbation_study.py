@@ -25,6 +25,7 @@ def main(argv=None):
     import matplotlib.pyplot as plt
 
     from viscocontact.adhesion import EnergyBalance, NoAdhesion
+    from viscocontact.methods.auto import Auto
     from viscocontact.problem import ContactProblem
     from viscocontact.profiles import Sinusoid
     from viscocontact.rheology import StandardLinearSolid
@@ -40,9 +41,10 @@ def main(argv=None):
     for label, adhesion in cases:
         area, mu = [], []
         for z in zetas:
+            # the planned method: the spectral method for the adhesionless curve, the BEM else
             r = ContactProblem(profile=Sinusoid(amplitude=lam), rheology=StandardLinearSolid(beta=10.0),
                                solver=Newton(), adhesion=adhesion, mean_pressure=0.1,
-                               zeta=float(z)).solve()
+                               zeta=float(z), method=Auto()).solve()
             ok = r.converged
             area.append(r.area if ok else np.nan)
             mu.append(r.reduced_friction if ok else np.nan)
