@@ -12,7 +12,7 @@ from typing import ClassVar
 
 import attrs
 
-from .._validation import in_range
+from .._validation import in_range, int_range
 from .base import SolutionMethod
 
 
@@ -27,6 +27,8 @@ class Auto(SolutionMethod):
     finish_with_bem : bool
         When the spectral estimate stays above ``tolerance``, solve again with the BEM from the
         grid's contact set (the result then comes from the BEM and says so in its events).
+    max_points : int or None
+        Largest grid the spectral method may use (``None``: its default).
     """
 
     name: ClassVar[str] = "auto"
@@ -34,6 +36,8 @@ class Auto(SolutionMethod):
     tolerance: float = attrs.field(default=1e-3, validator=in_range(1e-8, 0.1))
     finish_with_bem: bool = attrs.field(default=True,
                                         validator=attrs.validators.instance_of(bool))
+    max_points: int | None = attrs.field(default=None, validator=attrs.validators.optional(
+        int_range(64, 1 << 22)))
 
     def choose(self, problem) -> tuple[SolutionMethod, str]:
         """The method a solve of ``problem`` takes, and why."""
@@ -52,7 +56,9 @@ class Auto(SolutionMethod):
     def spectral(self) -> SolutionMethod:
         from .spectral import Spectral
 
-        return Spectral(tolerance=self.tolerance)
+        if self.max_points is None:
+            return Spectral(tolerance=self.tolerance)
+        return Spectral(tolerance=self.tolerance, max_points=self.max_points)
 
     def solve(self, problem, initial=None, *, fields: bool = False, prepared=None):
         from .bem import BEM
