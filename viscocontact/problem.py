@@ -11,6 +11,8 @@ approach path from first touch when no contact set is given.
 """
 from __future__ import annotations
 
+import logging
+
 import attrs
 
 from ._validation import in_range, int_range
@@ -150,11 +152,27 @@ class ContactProblem:
 
         with single_blas_thread():      # small dense systems: threads cost more than they gain
             result = self.method.solve(self, initial, fields=fields, prepared=prepared)
+        _log(result)
         if raise_on_failure and not result.converged:
             from .errors import ConvergenceError
 
             raise ConvergenceError(result.message, result)
         return result
+
+
+#: Solver events (contact births, merges, refinements, the method chosen) are logged here at
+#: INFO, one record per event after each solve; a solve that does not converge logs a WARNING.
+logger = logging.getLogger("viscocontact.solve")
+
+
+def _log(result: ContactResult) -> None:
+    if logger.isEnabledFor(logging.INFO):
+        method = result.method or "unknown method"
+        for event in result.extras.get("events", ()):
+            logger.info("%s: %s", method, event)
+    if not result.converged:
+        logger.warning("%s: %s (%s)", result.method or "solve", result.status.value,
+                       result.message)
 
 
 def _default_method() -> SolutionMethod:

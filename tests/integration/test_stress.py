@@ -1,4 +1,4 @@
-"""Stability stress tests (issue 5 §4): the solver at the edges of parameter space.
+"""Stability stress tests: the solver at the edges of parameter space.
 
 Every scene here sits at an extreme: β up to 1e4, ζ from 1e-10 to 1e10, γ̃ from 0 past the jump
 into full contact, contacts a few elements wide, near full contact, more than 100 contacts, and

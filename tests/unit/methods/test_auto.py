@@ -65,3 +65,25 @@ def test_an_adhesive_scene_solved_by_auto_is_the_bem_solve():
     direct = ContactProblem(profile=Sinusoid(amplitude=0.1), solver=Newton(), **adhesive).solve()
     assert planned.method == direct.method == "bem"
     assert planned.area == direct.area and planned.friction == direct.friction
+
+
+def test_solver_events_reach_logging(caplog):
+    """Each event of a solve is a record of the ``viscocontact.solve`` logger; a solve that
+    does not converge warns there too."""
+    import logging
+
+    with caplog.at_level(logging.INFO, logger="viscocontact.solve"):
+        result = _wavy(mean_pressure=0.3, method=Auto()).solve()
+    messages = [r.getMessage() for r in caplog.records if r.name == "viscocontact.solve"]
+    assert messages == [f"spectral: {e}" for e in result.extras["events"]]
+    caplog.clear()
+    from viscocontact.solvers.base import Tolerances
+
+    stalled = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(), solver=Newton(),
+                             adhesion=EnergyBalance(gamma=1e-4), mean_pressure=0.1,
+                             tolerances=Tolerances(residual=1e-9, max_evaluations=2),
+                             fallback=None)
+    with caplog.at_level(logging.INFO, logger="viscocontact.solve"):
+        out = stalled.solve()
+    assert not out.converged
+    assert any(r.levelno == logging.WARNING and "bem" in r.getMessage() for r in caplog.records)
