@@ -27,21 +27,9 @@ from viscocontact.scene import Scene
 from viscocontact.studies import COLUMNS, StudyFileError, Sweep, load_study, resume, run, storage
 from viscocontact.studies.guard import lock_path
 from viscocontact.studies.point import TIMING_COLUMNS
+from viscocontact.testing.scenes import WAVY
 
-SCENE = """
-[profile]
-kind = "sinusoid"
-amplitude = 0.1
-[rheology]
-kind = "standard-linear-solid"
-beta = 10.0
-[solver]
-kind = "newton"
-[load]
-mean_pressure = 0.1
-[sliding]
-zeta = 1.0
-"""
+SCENE = WAVY
 ZETAS = (0.01, 0.1, 1.0, 10.0, 100.0)
 ARGS = ["--zetas", ",".join(map(str, ZETAS)), "--elements", "32", "--quiet"]
 

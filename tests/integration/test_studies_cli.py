@@ -9,21 +9,9 @@ import pytest
 from viscocontact.cli import main
 from viscocontact.studies import COLUMNS, load_study
 from viscocontact.studies.point import TIMING_COLUMNS
+from viscocontact.testing.scenes import WAVY
 
-SCENE = """
-[profile]
-kind = "sinusoid"
-amplitude = 0.1
-[rheology]
-kind = "standard-linear-solid"
-beta = 10.0
-[solver]
-kind = "newton"
-[load]
-mean_pressure = 0.1
-[sliding]
-zeta = 1.0
-"""
+SCENE = WAVY
 SWEEP = ["--zetas", "0.1,10", "--loads", "0.05,0.15", "--elements", "32", "--quiet"]
 
 

@@ -17,21 +17,9 @@ import pytest
 from viscocontact import deadline as deadline_module
 from viscocontact.deadline import check, deadline, remaining
 from viscocontact.errors import TimeLimitExceeded, ValidationError, ViscoContactError
+from viscocontact.testing.scenes import WAVY
 
-SCENE = """
-[profile]
-kind = "sinusoid"
-amplitude = 0.1
-[rheology]
-kind = "standard-linear-solid"
-beta = 10.0
-[solver]
-kind = "newton"
-[load]
-mean_pressure = 0.1
-[sliding]
-zeta = 1.0
-"""
+SCENE = WAVY
 
 
 def expired(seconds: float) -> None:

@@ -10,23 +10,11 @@ from pathlib import Path
 import pytest
 
 import viscocontact as vc
+from viscocontact.testing.scenes import WAVY
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "scenes"
 
-SCENE = """
-[profile]
-kind = "sinusoid"
-amplitude = 0.1
-[rheology]
-kind = "standard-linear-solid"
-beta = 10.0
-[solver]
-kind = "newton"
-[load]
-mean_pressure = 0.1
-[sliding]
-zeta = 1.0
-"""
+SCENE = WAVY
 
 HOMES = {
     "Scene": "viscocontact.scene", "ContactProblem": "viscocontact.problem",

@@ -6,22 +6,11 @@ import subprocess
 import sys
 from pathlib import Path
 
+from viscocontact.testing.scenes import WAVY
+
 PNG = b"\x89PNG\r\n\x1a\n"
 
-SCENE = """
-[profile]
-kind = "sinusoid"
-amplitude = 0.1
-[rheology]
-kind = "standard-linear-solid"
-beta = 10.0
-[solver]
-kind = "newton"
-[load]
-mean_pressure = 0.1
-[sliding]
-zeta = 1.0
-"""
+SCENE = WAVY
 
 CALLER = r"""
 import sys

@@ -7,21 +7,9 @@ import pytest
 
 from viscocontact.scene import Scene
 from viscocontact.studies.point import COLUMNS, TIMING_COLUMNS
+from viscocontact.testing.scenes import WAVY
 
-ADHESIONLESS = """
-[profile]
-kind = "sinusoid"
-amplitude = 0.1
-[rheology]
-kind = "standard-linear-solid"
-beta = 10.0
-[solver]
-kind = "newton"
-[load]
-mean_pressure = 0.1
-[sliding]
-zeta = 1.0
-"""
+ADHESIONLESS = WAVY
 
 ADHESIVE = ADHESIONLESS.replace('[solver]', '[adhesion]\nkind = "energy-balance"\n'
                                             'gamma = 3e-5\n[solver]')

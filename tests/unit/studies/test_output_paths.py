@@ -7,21 +7,9 @@ import pytest
 
 from viscocontact.cli import main
 from viscocontact.studies import StudyFileError, Sweep, load_study, run, storage
+from viscocontact.testing.scenes import WAVY
 
-SCENE = """
-[profile]
-kind = "sinusoid"
-amplitude = 0.1
-[rheology]
-kind = "standard-linear-solid"
-beta = 10.0
-[solver]
-kind = "newton"
-[load]
-mean_pressure = 0.1
-[sliding]
-zeta = 1.0
-"""
+SCENE = WAVY
 
 
 @pytest.fixture
