@@ -1,4 +1,5 @@
-"""The boundary-element method with energy-balance edges (thesis §4.4); see :mod:`.method`."""
+"""The boundary-element method with energy-balance edges (thesis §4.4); see
+:mod:`~viscocontact.methods.bem.method`."""
 from .meshing import Discretization
 from .method import BEM
 

@@ -1,11 +1,13 @@
 """The boundary-element method with energy-balance edges (thesis §4.4) as a
 :class:`~viscocontact.methods.base.SolutionMethod`.
 
-A solve wires the parts, each with one job: the mesh policy (:mod:`.meshing`), the edge system
-of a fixed contact set (:mod:`.system`), the equilibrium at one control value with its
-contact-set changes (:mod:`.equilibrium`), the grid checks (:mod:`.checks`), the approach path
-and load stability (:mod:`.path`), the closed state (:mod:`.closed`) and the result
-(:func:`assemble`).
+A solve wires the parts, each with one job: the mesh policy
+(:mod:`~viscocontact.methods.bem.meshing`), the edge system of a fixed contact set
+(:mod:`~viscocontact.methods.bem.system`), the equilibrium at one control value with its
+contact-set changes (:mod:`~viscocontact.methods.bem.equilibrium`), the grid checks
+(:mod:`~viscocontact.methods.bem.checks`), the approach path and load stability
+(:mod:`~viscocontact.methods.bem.path`), the closed state (:mod:`~viscocontact.methods.bem.closed`)
+and the result (:meth:`Solve.assemble`).
 """
 from __future__ import annotations
 

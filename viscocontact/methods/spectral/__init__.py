@@ -10,24 +10,27 @@ and no contact as the BEM reports them.
 
 Method
 ------
-* Grid (:mod:`.grid`): ``N`` cells of constant pressure centred at ``x_peak + k h``, the contact
-  conditions collocated at the centres.
-* Operator (:mod:`.operator`): ``u = A p`` with ``A`` circulant, applied by ``scipy.fft``; its
-  eigenvalues from the prepared kernel's Fourier multiplier (any rheology with a creep spectrum,
-  half-plane and layers), the instantaneous part in closed form (Clausen), the rest by alias sums.
-  Cached per (prepared kernel, ``N``) in :class:`SpectralPrepared`.
-* Solvers (:mod:`.solvers`): preconditioned Polonsky-Keer conjugate gradients when ``A`` is
-  symmetric (elastic, or ζ at a limit), a primal-dual active set with right-preconditioned GMRES
-  otherwise (viscoelastic); load control (``p̃∞`` given) and penetration control (``Δ̃`` given).
-* Grids (:mod:`.method`): nested iteration from at most 256 cells, each grid starting from the
-  previous one's solution; from the first grid with ``32·√(1e-3/tolerance)`` cells per shortest
-  wavelength of the profile (:attr:`Profile.shortest_wavelength`) on, the change of ``Ã`` and
-  ``μ`` from the previous grid gives the error estimate (Richardson at order 1, and at least
-  half the previous change: see below), and the grid is doubled until it meets the tolerance
-  or reaches ``max_points``. ``μ`` is measured relative to ``max(|μ|, friction_floor·√m2)``.
-* Edges (:mod:`.edges`): to a fraction of a cell from the square-root field at an adhesionless
-  edge: left edges from the pressures of the two outermost loaded cells, right edges from the
-  gaps of the two first free cells (maps fitted on Westergaard's solution).
+* Grid (:mod:`~viscocontact.methods.spectral.grid`): ``N`` cells of constant pressure centred at
+  ``x_peak + k h``, the contact conditions collocated at the centres.
+* Operator (:mod:`~viscocontact.methods.spectral.operator`): ``u = A p`` with ``A`` circulant,
+  applied by ``scipy.fft``; its eigenvalues from the prepared kernel's Fourier multiplier (any
+  rheology with a creep spectrum, half-plane and layers), the instantaneous part in closed form
+  (Clausen), the rest by alias sums. Cached per (prepared kernel, ``N``) in
+  :class:`SpectralPrepared`.
+* Solvers (:mod:`~viscocontact.methods.spectral.solvers`): preconditioned Polonsky-Keer conjugate
+  gradients when ``A`` is symmetric (elastic, or ζ at a limit), a primal-dual active set with
+  right-preconditioned GMRES otherwise (viscoelastic); load control (``p̃∞`` given) and penetration
+  control (``Δ̃`` given).
+* Grids (:mod:`~viscocontact.methods.spectral.method`): nested iteration from at most 256 cells,
+  each grid starting from the previous one's solution; from the first grid with
+  ``32·√(1e-3/tolerance)`` cells per shortest wavelength of the profile
+  (:attr:`Profile.shortest_wavelength`) on, the change of ``Ã`` and ``μ`` from the previous grid
+  gives the error estimate (Richardson at order 1, and at least half the previous change: see
+  below), and the grid is doubled until it meets the tolerance or reaches ``max_points``. ``μ`` is
+  measured relative to ``max(|μ|, friction_floor·√m2)``.
+* Edges (:mod:`~viscocontact.methods.spectral.edges`): to a fraction of a cell from the square-root
+  field at an adhesionless edge: left edges from the pressures of the two outermost loaded cells,
+  right edges from the gaps of the two first free cells (maps fitted on Westergaard's solution).
 * Friction: eq. 4.16 exactly for the piecewise-constant pressure (``Σ p_k Δr_k``);
   ``extras["friction_dissipation"]`` is ``μ`` from the power fed into the solid (the loss
   compliance and the pressure spectrum), an independent check that converges to it.
@@ -82,7 +85,8 @@ memory tables the BEM needs and this method does not) and 9 % in the eigenvalues
 
 Limits: adhesive scenes (use the BEM); contacts narrower than two cells get their cells as
 their extent (the estimate sees them and refines); the active set may fail on very
-non-symmetric operators (an SLS with β >= 50 at ζ of order one; :mod:`.solvers`), and the
+non-symmetric operators (an SLS with β >= 50 at ζ of order one;
+:mod:`~viscocontact.methods.spectral.solvers`), and the
 result then says so.
 """
 from .method import Spectral, SpectralPrepared

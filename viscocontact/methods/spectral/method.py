@@ -5,7 +5,7 @@ solution (:func:`next_start`): from at most :data:`LADDER_START` cells (or, with
 from half the first trusted grid) up to the first trusted grid (:func:`first_points`), then on
 until the estimate (:func:`changes`, :func:`estimate`) is within the tolerance or the next grid
 would exceed ``max_points``. Closed contact and no contact are answered without a grid
-(:mod:`.closed`)."""
+(:mod:`~viscocontact.methods.spectral.closed`)."""
 from __future__ import annotations
 
 import math
