@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import sys
 import warnings
+from types import FrameType
 
 
 class ViscoContactError(Exception):
@@ -91,7 +92,8 @@ def _internal(frame) -> bool:
 def warn_user(message: str, category: type[Warning]) -> None:
     """``warnings.warn`` attributed to the first caller outside viscocontact and attrs, so that
     the warning names the user's line (and the default filter shows it once per line)."""
-    level, frame = 2, sys._getframe(1)
+    level = 2
+    frame: FrameType | None = sys._getframe(1)
     while frame is not None and _internal(frame):
         frame, level = frame.f_back, level + 1
     warnings.warn(message, category, stacklevel=level if frame is not None else 2)

@@ -161,8 +161,8 @@ def plot_cycle(data, out: Path, prefix: str) -> list[Path]:
         fig = _figure(figsize=(6.4, 4.2))
         ax = fig.subplots()
         for ig, gamma in enumerate(metrics["gamma"]):
-            label = f"γ̃ = {gamma:g}" if np.isfinite(gamma) else None
-            ax.plot(metrics["zeta"], band.mean[:, ig], "-o", ms=3, label=label)
+            legend = f"γ̃ = {gamma:g}" if np.isfinite(gamma) else None
+            ax.plot(metrics["zeta"], band.mean[:, ig], "-o", ms=3, label=legend)
             if metrics["toughness"].shape[2] > 1:
                 ax.fill_between(metrics["zeta"], band.lower[:, ig], band.upper[:, ig], alpha=0.2,
                                 lw=0)

@@ -12,6 +12,7 @@ approach path from first touch when no contact set is given.
 from __future__ import annotations
 
 import logging
+from typing import Any
 
 import attrs
 
@@ -35,7 +36,7 @@ __all__ = ["ContactProblem", "Discretization", "Prepared", "solve", "mesh_spec",
 class Prepared:
     """What a problem precomputes once: kernel tables, normalised profile, m2."""
 
-    kernel: object
+    kernel: Any                 # the kernel's prepared tables (duck-typed)
     shape: NormalizedProfile
     m2: float
 
@@ -75,10 +76,10 @@ class ContactProblem:
         :class:`~viscocontact.methods.bem.BEM`).
     """
 
-    profile: object
-    rheology: object
+    profile: Any                # duck-typed components: anything with the base's methods
+    rheology: Any
     solver: NonlinearSolver
-    kernel: object = attrs.field(factory=HalfPlane)
+    kernel: Any = attrs.field(factory=HalfPlane)
     adhesion: AdhesionModel = attrs.field(factory=NoAdhesion)
     mean_pressure: float | None = None
     penetration: float | None = None

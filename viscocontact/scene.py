@@ -29,7 +29,7 @@ import re
 import tomllib
 import types
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any, Mapping, cast
 
 import attrs
 import numpy as np
@@ -312,7 +312,9 @@ class Load:
     @property
     def value(self) -> float:
         """The controlled value."""
-        return self.mean_pressure if self.mean_pressure is not None else self.penetration
+        # exactly one of the two is set (checked at construction)
+        return cast(float, self.mean_pressure if self.mean_pressure is not None
+                    else self.penetration)
 
 
 def _is_instance_of_base(kind: str):
@@ -438,15 +440,15 @@ class Scene:
             raise ValidationError("kernel.poisson", knu, f"the scene's poisson = {self.poisson!r} "
                                                          "(one material, one Poisson ratio)")
         if self.physical is not None:
-            self._check_physical_agrees()
-            self._warn_outside_model()
+            self._check_physical_agrees(self.physical)
+            self._warn_outside_model(self.physical)
 
-    def _warn_outside_model(self) -> None:
+    def _warn_outside_model(self, phys: Mapping[str, float]) -> None:
         """A :class:`~viscocontact.errors.ModelValidityWarning` for each doubt that
         ``viscocontact describe`` lists: a Tabor parameter below 3 (eq. 1.48; rubbery, or glassy
         at high ζ) for an adhesive scene given in physical units, where the infinitely
         short-range (JKR-like) adhesion of the energy balance does not hold."""
-        if not self.adhesive or not {"E0", "wavelength"} <= set(self.physical):
+        if not self.adhesive or not {"E0", "wavelength"} <= set(phys):
             return
         from .errors import ModelValidityWarning, warn_user
 
@@ -463,9 +465,8 @@ class Scene:
         component = getattr(self, section)
         return _param(component, key), _has_param(component, key)
 
-    def _check_physical_agrees(self) -> None:
-        phys = self.physical
-        length = getattr(self.profile, "length", None)  # a measured profile's λ0 (m)
+    def _check_physical_agrees(self, phys: Mapping[str, float]) -> None:
+        length: Any = getattr(self.profile, "length", None)  # a measured profile's λ0 (m)
         if "wavelength" in phys and _is_number(length) and not _agree(length, phys["wavelength"]):
             raise ValidationError("physical.wavelength", phys["wavelength"],
                                   f"the profile's own length λ0 = {length!r} m")
@@ -557,7 +558,8 @@ def physical_targets(section: str, physical: Mapping[str, float], poisson: float
                                       f"a value ({meaning}, {unit}): needed to convert "
                                       f"physical.{present[0]} into {sec}.{key}")
         P = physical
-        q0 = 2.0 * math.pi / P["wavelength"] if "wavelength" in P else None
+        # every conversion but the mean pressure's needs physical.wavelength (checked above)
+        q0 = 2.0 * math.pi / P["wavelength"] if "wavelength" in P else math.nan
         if key in ("rms", "amplitude", "thickness"):
             value = q0 * P[key]
         elif key == "gamma":
@@ -593,7 +595,7 @@ def _none_adhesion(phys):
 
 
 def _fill(section: str, params: dict[str, Any], targets: dict[str, tuple[float, str]],
-          phys: Mapping[str, float], fields: dict | None, kind: str) -> None:
+          phys: Mapping[str, float], fields: dict | None, kind: str | None) -> None:
     for key, (value, source) in targets.items():
         if fields is not None and key not in fields:
             first = source.split(" and ")[0]
@@ -627,7 +629,7 @@ def _section(data: Mapping[str, Any], name: str) -> dict[str, Any] | None:
 
 def _kind_class(section: str, params: dict[str, Any]) -> tuple[str | None, dict | None]:
     """(kind, init fields) if the kind is registered and loadable, else (kind, None)."""
-    kind = params.get("kind")
+    kind: Any = params.get("kind")  # any TOML value: a kind that is no string is a TypeError
     try:
         return kind, _init_fields(_registry_for(section).get(kind))
     except (PluginError, TypeError):
@@ -665,30 +667,35 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
     _check_physical(None, None, physical)
     phys = physical or {}
     tables = {s: _section(data, s) for s in COMPONENT_SECTIONS}
-    for required in ("profile", "rheology"):
-        if tables[required] is None:
-            raise ValidationError(required, None, f"a [{required}] table with a 'kind'")
-    if tables["kernel"] is None:
-        tables["kernel"] = {"kind": DEFAULT_KERNEL}
-    if tables["adhesion"] is None:
-        tables["adhesion"] = {"kind": "energy-balance" if "work_of_adhesion" in phys else "none"}
-    nu = _resolve_poisson(data, phys, tables["kernel"])
+    profile_table, rheology_table = tables["profile"], tables["rheology"]
+    if profile_table is None:
+        raise ValidationError("profile", None, "a [profile] table with a 'kind'")
+    if rheology_table is None:
+        raise ValidationError("rheology", None, "a [rheology] table with a 'kind'")
+    kernel_table = tables["kernel"]
+    if kernel_table is None:
+        kernel_table = {"kind": DEFAULT_KERNEL}
+    adhesion_table = tables["adhesion"]
+    if adhesion_table is None:
+        adhesion_table = {"kind": "energy-balance" if "work_of_adhesion" in phys else "none"}
+    solver_table = tables["solver"]
+    nu = _resolve_poisson(data, phys, kernel_table)
 
     # profile (its Λ̃ is needed to convert the load)
-    params = tables["profile"]
+    params = profile_table
     kind, fields = _kind_class("profile", params)
     _fill("profile", params, physical_targets("profile", phys, nu), phys, fields, kind)
     profile = build_component("profile", params)
-    rheology = build_component("rheology", tables["rheology"])
+    rheology = build_component("rheology", rheology_table)
 
-    params = tables["kernel"]
+    params = kernel_table
     kind, fields = _kind_class("kernel", params)
     _fill("kernel", params, physical_targets("kernel", phys, nu), phys, fields, kind)
     if fields is not None and "poisson" in fields and "poisson" not in params:
         params["poisson"] = nu
     kernel = build_component("kernel", params)
 
-    params = tables["adhesion"]
+    params = adhesion_table
     kind, fields = _kind_class("adhesion", params)
     targets = physical_targets("adhesion", phys, nu)
     if targets and kind == "none":
@@ -696,9 +703,9 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
     _fill("adhesion", params, targets, phys, fields, kind)
     adhesion = build_component("adhesion", params, lazy=True)
 
-    if tables["solver"] is None:
-        tables["solver"] = {"kind": DEFAULT_SOLVER[kind_of("adhesion", adhesion) != "none"]}
-    solver = build_component("solver", tables["solver"], lazy=True)
+    if solver_table is None:
+        solver_table = {"kind": DEFAULT_SOLVER[kind_of("adhesion", adhesion) != "none"]}
+    solver = build_component("solver", solver_table, lazy=True)
     method = build_component("method", tables["method"] or {"kind": DEFAULT_METHOD}, lazy=True)
 
     load_table = _section(data, "load") or {}

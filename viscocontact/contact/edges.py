@@ -126,7 +126,7 @@ class EdgeContext:
         self.zones = zones
         self.counts = counts            # elements of each contact (None: spec.elements for all)
         self.amplitude = amplitude      # Λ̃
-        self._sif = None
+        self._sif: np.ndarray | None = None
 
     @property
     def mesh(self) -> Mesh:

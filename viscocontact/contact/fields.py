@@ -11,6 +11,8 @@ are fitted on the elements next to each edge to the element averages of
 """
 from __future__ import annotations
 
+from typing import Any
+
 import attrs
 import numpy as np
 from scipy.linalg import lu_factor, lu_solve
@@ -25,7 +27,7 @@ _POWERS = (-0.5, 0.5, 1.5)
 class NormalizedProfile:
     """The profile in the units of eq. 4.18: ``r̃ = r/Λ`` (max 1) against ``x̃``."""
 
-    profile: object
+    profile: Any
     amplitude: float          # Λ̃ = q0 Λ
     peak_position: float
     #: local maxima of the profile (:meth:`Profile.local_maxima`; empty for a duck-typed profile

@@ -39,7 +39,7 @@ def repair(edges: np.ndarray, min_width: float, min_gap: float):
         reasons.append(f"{len(pairs) - len(kept)} contact(s) detached")
     pairs = sorted(kept, key=lambda p: p[0])
     # merge overlapping neighbours
-    merged = []
+    merged: list[list[float]] = []
     for p in pairs:
         if merged and p[0] - merged[-1][1] <= min_gap:
             merged[-1][1] = max(merged[-1][1], p[1])

@@ -8,6 +8,8 @@ fit physical (E'' >= 0, monotone E') and avoids the oscillating spectra of an un
 """
 from __future__ import annotations
 
+from typing import Any
+
 import attrs
 import numpy as np
 from scipy.optimize import least_squares, nnls
@@ -131,14 +133,14 @@ def fit_prony(omega, storage, loss, *, times=None, n_per_decade: float = 1.0,
     True
     """
     w, e1, e2 = _data(omega, storage, loss)
-    fixed = relaxed_modulus is not None
-    if fixed and not (np.isfinite(float(relaxed_modulus)) and float(relaxed_modulus) > 0):
+    if relaxed_modulus is not None and not (np.isfinite(float(relaxed_modulus))
+                                            and float(relaxed_modulus) > 0):
         raise ValidationError("fit_prony.relaxed_modulus", relaxed_modulus,
                               "a finite real number > 0, or None to fit it")
     grids = [_grid(w, n_per_decade, shift=0.0)] if times is None else [_times(times)]
-    problem = _Problem(w, e1, e2, float(relaxed_modulus) if fixed else None)
+    problem = _Problem(w, e1, e2, float(relaxed_modulus) if relaxed_modulus is not None else None)
 
-    best = None
+    best: tuple[float, Any, np.ndarray, np.ndarray] | None = None
     for tau in grids:
         e0, arms = problem.nnls(tau)
         if refine and np.any(arms > 0):
@@ -152,6 +154,7 @@ def fit_prony(omega, storage, loss, *, times=None, n_per_decade: float = 1.0,
         if refine and times is None and len(grids) == 1 and np.sqrt(cost) > RETRY_ABOVE:
             # the refinement is not convex: try once more from the half-step-shifted grid
             grids.append(_grid(w, n_per_decade, shift=0.5))
+    assert best is not None, "at least one grid of times was tried"
     _, e0, arms, tau = best
     keep = arms > 0
     return PronySeries(relaxed_modulus=e0, moduli=arms[keep], times=tau[keep],

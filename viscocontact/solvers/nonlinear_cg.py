@@ -311,6 +311,7 @@ class NonlinearCG(FiniteDifferenceOptions, NonlinearSolver):
                     break
                 z = self._precondition(obj, p, g)
                 if not steepest:
+                    assert d is not None  # steepest is set while there is no direction yet
                     d = -z + self._beta(g, z, g_old, z_old) * d
                     steepest = not float(g @ d) < 0.0
                 bound = step_bound(problem, p.x)
@@ -319,6 +320,7 @@ class NonlinearCG(FiniteDifferenceOptions, NonlinearSolver):
                         d = -z
                         since_restart = 0
                         restarts += 1
+                    assert d is not None  # set above, or by the steepest descent
                     alpha_max = _largest_step(bound, d)
                     slope = float(g @ d)
                     q, alpha = self._line_search(

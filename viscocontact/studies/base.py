@@ -92,6 +92,8 @@ def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
         physical.pop("velocity", None)
         physical.pop("tau", None)
     if control is not None:
+        if value is None:
+            raise TypeError("scene_variant: a control needs its value")
         out["load"] = {control: float(value)}
         physical.pop("mean_pressure", None)
         physical.pop("penetration", None)

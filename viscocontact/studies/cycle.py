@@ -61,12 +61,6 @@ __all__ = ["Cycle", "CycleMetrics", "cycle_metrics"]
 APPROACH, RETRACT = "approach", "retract"
 
 
-def _real(name: str, lo=None, lo_open=False):
-    def convert(value):
-        return real_list(f"cycle.{name}", [value], lo=lo, lo_open=lo_open)[0]
-    return convert
-
-
 def _refine(inst, attribute, value):
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= value <= 30:
         raise ValidationError("cycle.refine", value, "an integer in [0, 30]")
@@ -119,11 +113,13 @@ class Cycle(Study):
     kind: ClassVar[str] = "cycle"
 
     scene: Scene = attrs.field(validator=attrs.validators.instance_of(Scene))
-    max_penetration: float = attrs.field(converter=_real("max_penetration"))
-    step: float = attrs.field(converter=_real("step", lo=0.0, lo_open=True))
-    start: float = attrs.field(default=0.0, converter=_real("start"))
+    max_penetration: float = attrs.field(
+        converter=lambda v: real_list("cycle.max_penetration", [v])[0])
+    step: float = attrs.field(
+        converter=lambda v: real_list("cycle.step", [v], lo=0.0, lo_open=True)[0])
+    start: float = attrs.field(default=0.0, converter=lambda v: real_list("cycle.start", [v])[0])
     min_penetration: float = attrs.field(
-        converter=_real("min_penetration"),
+        converter=lambda v: real_list("cycle.min_penetration", [v])[0],
         default=attrs.Factory(lambda self: self.start - 2.0, takes_self=True))
     refine: int = attrs.field(default=4, validator=_refine)
     max_failures: int = attrs.field(default=3, validator=_max_failures)

@@ -18,10 +18,13 @@ from __future__ import annotations
 import contextlib
 import os
 import signal
+import sys
 import threading
 from pathlib import Path
+from types import ModuleType
 from typing import Iterator
 
+fcntl: ModuleType | None
 try:
     import fcntl
 except ImportError:  # pragma: no cover - Windows
@@ -44,6 +47,8 @@ def _try_lock(fd: int) -> bool:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
             return False
+        return True
+    if sys.platform != "win32":  # pragma: no cover - neither fcntl nor msvcrt: no guard
         return True
     try:  # pragma: no cover - Windows
         import msvcrt

@@ -40,7 +40,7 @@ import os
 import re
 import time
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any, Iterable, Mapping
 
 import numpy as np
 
@@ -421,7 +421,7 @@ def records(points: Mapping[str, np.ndarray]) -> dict[int, list[dict[str, Any]]]
     """Rows grouped by chain, each chain in step order (the records a study continues from)."""
     n = len(points["chain"])
     out: dict[int, list[dict[str, Any]]] = {}
-    order = np.lexsort((points["step"], points["chain"])) if n else []
+    order: Iterable[int] = np.lexsort((points["step"], points["chain"])) if n else []
     for i in order:
         row = {k: (v[i].item() if hasattr(v[i], "item") and k != "edges" else v[i])
                for k, v in points.items()}
@@ -432,10 +432,11 @@ def records(points: Mapping[str, np.ndarray]) -> dict[int, list[dict[str, Any]]]
 def study_from_header(header: Mapping[str, Any]):
     """The :class:`~viscocontact.studies.base.Study` a study file holds."""
     from ..scene import Scene
+    from .base import Study
     from .cycle import Cycle
     from .sweep import Sweep
 
-    kinds = {"sweep": Sweep, "cycle": Cycle}
+    kinds: dict[str, type[Study]] = {"sweep": Sweep, "cycle": Cycle}
     if header["kind"] not in kinds:
         raise StudyFileError(f"unknown study kind {header['kind']!r} (expected one of "
                              f"{sorted(kinds)})")

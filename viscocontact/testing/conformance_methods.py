@@ -9,10 +9,12 @@ complementarity in the reported fields); a scene without contact gives the no-co
 """
 from __future__ import annotations
 
+from typing import NoReturn
+
 import numpy as np
 
 
-def _fail(name: str, message: str):
+def _fail(name: str, message: str) -> NoReturn:
     raise AssertionError(f"{name}: {message}")
 
 

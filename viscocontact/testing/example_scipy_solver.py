@@ -117,9 +117,11 @@ class ScipyRoot(NonlinearSolver):
         else:
             status = Status.STALLED if sol.success else Status.FAILED
             message = f"scipy.optimize.root({self.method!r}) stopped: {sol.message}"
-        x, r = track.best_x, track.best_r
-        if x is None:  # not a single evaluation (cannot happen: max_evaluations >= 1)
+        if track.best_x is None or track.best_r is None:
+            # not a single evaluation (cannot happen: max_evaluations >= 1)
             x, r = x0, np.full(x0.shape, np.inf)
+        else:
+            x, r = track.best_x, track.best_r
         converged = (bool(np.all(np.isfinite(r)))
                      and float(np.max(np.abs(r), initial=0.0)) <= tolerances.residual)
         if converged:

@@ -50,7 +50,7 @@ def _ro(a) -> np.ndarray:
     return arr
 
 
-_ARRAY = dict(converter=_ro, eq=attrs.cmp_using(eq=np.array_equal))
+_ARRAY_EQ = attrs.cmp_using(eq=np.array_equal)
 
 
 class FunctionProblem:
@@ -154,10 +154,10 @@ class TanhSystem:
         only root (all roots have ``|tanh u_i| <= 0.5``, where the map is a contraction).
     """
 
-    root: np.ndarray = attrs.field(**_ARRAY)
-    width: np.ndarray = attrs.field(**_ARRAY)
-    scale: np.ndarray = attrs.field(**_ARRAY)
-    coupling: np.ndarray = attrs.field(**_ARRAY)
+    root: np.ndarray = attrs.field(converter=_ro, eq=_ARRAY_EQ)
+    width: np.ndarray = attrs.field(converter=_ro, eq=_ARRAY_EQ)
+    scale: np.ndarray = attrs.field(converter=_ro, eq=_ARRAY_EQ)
+    coupling: np.ndarray = attrs.field(converter=_ro, eq=_ARRAY_EQ)
 
     @coupling.validator
     def _check(self, attribute, value):

@@ -49,6 +49,7 @@ McCool, J. I. (1986). Comparison of models for the contact of rough surfaces. We
 from __future__ import annotations
 
 import math
+from typing import cast
 
 import attrs
 import numpy as np
@@ -181,7 +182,8 @@ class FullerTabor:
     @property
     def critical_neck(self) -> float:
         """``δ_c = (27π²Δγ²R/(64E*²))^(1/3)`` (eq. 3.28), 1/q0 units."""
-        return -self.summit.pull_off_displacement_control().penetration
+        # displacement control always reports the neck's penetration
+        return -cast(float, self.summit.pull_off_displacement_control().penetration)
 
     @property
     def adhesion_parameter(self) -> float:

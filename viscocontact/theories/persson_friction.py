@@ -80,7 +80,9 @@ class PerssonFriction:
     """
 
     spectrum: LineSpectrum = attrs.field(validator=attrs.validators.instance_of(LineSpectrum))
-    rheology: Rheology = attrs.field(validator=attrs.validators.instance_of(Rheology))
+    # attrs' instance_of stub takes a concrete type[T]; an abstract class is valid at run time
+    rheology: Rheology = attrs.field(
+        validator=attrs.validators.instance_of(Rheology))  # type: ignore[type-abstract]
     contact_correction: float | None = attrs.field(
         default=None, validator=attrs.validators.optional(in_range(0.0, 1.0)))
 

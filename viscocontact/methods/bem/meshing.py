@@ -59,13 +59,15 @@ class Discretization:
 
     elements: int = attrs.field(default=64, validator=int_range(8, 4096))
     clustering: float = attrs.field(default=1.0, validator=in_range(0.5, 4.0))
+    # (attrs' stubs type a field by its default, a float, not by its float | None annotation)
     edge_resolution: float | None = attrs.field(default=0.1, validator=attrs.validators.optional(
-        in_range(1e-3, 1.0)))
+        in_range(1e-3, 1.0)))  # type: ignore[arg-type]
     grading: float = attrs.field(default=1.15, validator=in_range(1.05, 2.0))
     check_points: int = attrs.field(default=2048, validator=int_range(64, 1 << 20))
     path_step: float = attrs.field(default=0.05, validator=in_range(1e-4, 1.0))
     interior_resolution: float | None = attrs.field(
-        default=8.0, validator=attrs.validators.optional(in_range(1.0, 64.0)))
+        default=8.0,
+        validator=attrs.validators.optional(in_range(1.0, 64.0)))  # type: ignore[arg-type]
 
 
 #: Most elements per contact that :attr:`Discretization.interior_resolution` refines to.

@@ -10,6 +10,8 @@ penetration there is no contact.
 """
 from __future__ import annotations
 
+from typing import Any
+
 import attrs
 import numpy as np
 import scipy.fft
@@ -27,7 +29,7 @@ CLOSED_POINTS = 2048
 class ClosedContact:
     """The closed contact of a profile on a kernel (oscillating part; the mean is the load)."""
 
-    shape: object               # NormalizedProfile
+    shape: Any                  # NormalizedProfile (its profile is duck-typed)
     x: np.ndarray
     mean_height: float          # r̂_0
     stress: np.ndarray          # σ̃_osc, zero mean, tensile positive

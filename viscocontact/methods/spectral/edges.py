@@ -96,8 +96,8 @@ def contact_edges(x0: float, cell: float, pressure: np.ndarray, gap: np.ndarray)
         if length == n:
             raise ValueError("every cell is loaded: a closed contact has no edges")
         last = first + length - 1
-        lo = x0 + cell * (first - 0.5)
-        hi = x0 + cell * (last + 0.5)
+        lo: float | np.ndarray = x0 + cell * (first - 0.5)   # 0-d arrays at sub-cell edges
+        hi: float | np.ndarray = x0 + cell * (last + 0.5)
         if length >= 3:
             lo = x0 + cell * (first - edge_offset(p[first] / p[(first + 1) % n]))
             g1, g2 = gap[(last + 1) % n], gap[(last + 2) % n]

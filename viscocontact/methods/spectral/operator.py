@@ -75,6 +75,7 @@ def _alias_sum(n_cells: int, aliases: int, term, weights=None) -> np.ndarray:
         value = np.where(zero, 0.0, value) * w[i:i + rows, None]
         part = value.sum(axis=0)
         total = part if total is None else total + part
+    assert total is not None, "aliases >= 0: at least one block"
     return total
 
 

@@ -293,8 +293,8 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     tight = krylov_tolerance
     damped = False
     floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
-    previous = None
-    seen = set()
+    previous: np.ndarray | None = None
+    seen: set[bytes] = set()
     res = np.inf
     for it in range(1, max_iterations + 1):
         check_deadline()                  # the cooperative time limit (viscocontact.deadline)
@@ -309,7 +309,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         key = active.tobytes()
         if it > UNDAMPED_STEPS and not damped:       # slow to settle: damp the steps
             damped, loose = True, None
-        if key in seen and not np.array_equal(active, previous):
+        if key in seen and not (previous is not None and np.array_equal(active, previous)):
             if loose is not None:                    # a cycle of inexact steps: tighten them
                 loose = None
             else:                                    # a cycle of Newton steps: damp them
@@ -336,7 +336,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         g = g + s * step_g
         delta += s * step_d
         res = violation(g, p > 0)
-        if s == 1.0 and np.array_equal(active, previous):
+        if s == 1.0 and previous is not None and np.array_equal(active, previous):
             if loose is not None:
                 loose = None              # the set is found: solve on it tightly next
             elif res > tolerance and tight > 1e-15:
