@@ -91,7 +91,8 @@ class ContactProblem:
         default=None, validator=attrs.validators.optional(in_range(0.0, 1e-2, lo_open=True)))
     fallback: NonlinearSolver | None = attrs.field(
         factory=lambda: Bisection(initial_step=2e-3, growth=1.5))
-    method: SolutionMethod = attrs.field(factory=lambda: _default_method())
+    method: SolutionMethod = attrs.field(factory=lambda: _default_method(),
+                                         validator=attrs.validators.instance_of(SolutionMethod))
 
     def __attrs_post_init__(self):
         from .scene import Load

@@ -87,3 +87,8 @@ def test_solver_events_reach_logging(caplog):
         out = stalled.solve()
     assert not out.converged
     assert any(r.levelno == logging.WARNING and "bem" in r.getMessage() for r in caplog.records)
+
+
+def test_a_problem_refuses_a_method_that_is_not_one():
+    with pytest.raises(TypeError, match="method"):
+        _wavy(mean_pressure=0.3, method="spectral")
