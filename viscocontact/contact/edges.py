@@ -309,15 +309,32 @@ class EdgeContext:
         re-meshing noise of the contact interior enters ``U⁺ - U⁻`` or ``δL_P``. None when ``dx``
         is shorter than ``MIN_BORDER`` edge elements (no edge zone).
         """
+        border = self.border(i, dx)
+        if border is None:
+            return None
+        return border.d_u / dx, border.d_lp / dx
+
+    def border(self, i: int, dx: float) -> "Border | None":
+        """The bordered enlarged field of edge ``i`` advanced by ``dx`` (cached; None when
+        ``dx`` is shorter than ``MIN_BORDER`` edge elements): what :meth:`bordered_release`
+        computes, kept for its derivatives (:mod:`~viscocontact.contact.sensitivity`)."""
+        cache = self.__dict__.setdefault("_borders", {})
+        key = (i, float(dx))
+        if key not in cache:
+            cache[key] = self._bordered(i, dx)
+        return cache[key]
+
+    def _bordered(self, i: int, dx: float):
         new = self._new_elements(i, dx)
         if new is None:
             return None
-        from scipy.linalg import lu_solve
+        from scipy.linalg import lu_factor, lu_solve
 
         a, b = new
         xi = 0.5 * (a + b)
         base, mesh, k = self.fields, self.mesh, self.kernel
         pair = getattr(k, "antiderivative_pair", None) if self.dissipative else None
+        cols = rows = None
         if pair is not None:      # influence and antisymmetric integrals share the table look-ups
             c, cols = element_integrals(pair, mesh.mid, a, b)
             r, rows = element_integrals(pair, xi, mesh.left, mesh.right)
@@ -329,7 +346,8 @@ class EdgeContext:
         d = k.influence(xi, a, b)                                # (n, n)
         w_new = self.shape.heights(xi) - 1.0 + base.penetration
         Y = lu_solve(base.lu, c, check_finite=False)
-        s_new = np.linalg.solve(d - r @ Y, w_new - r @ base.sigma)
+        schur = lu_factor(d - r @ Y, check_finite=False)
+        s_new = lu_solve(schur, w_new - r @ base.sigma, check_finite=False)
         s_old = base.sigma - Y @ s_new
         h_new = b - a
         w_old = base.rhs0 + base.penetration
@@ -346,7 +364,54 @@ class EdgeContext:
             q_ba = hsig_a @ s_old + hsig @ (cols @ s_new)
             q_ab = (mesh.width * s_old) @ a_sig + (h_new * s_new) @ (rows @ base.sigma)
             d_lp = float(-0.25 * (q_ba - q_ab))
-        return float(d_u) / dx, d_lp / dx
+        return Border(edge=i, advance=float(dx), left=a, right=b, c=c, r=r, Y=Y, schur=schur,
+                      s_new=s_new, s_old=s_old, w_new=w_new, cols=cols, rows=rows,
+                      d_u=float(d_u), d_lp=d_lp)
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class Border:
+    """The bordered enlarged field of one edge advance (:meth:`EdgeContext.border`).
+
+    Attributes
+    ----------
+    edge : int
+    advance : float
+        ``δX`` (q0-scaled).
+    left, right : (n,) arrays
+        The new elements over the advance.
+    c, r : (N, n) and (n, N) arrays
+        New columns and rows of the influence matrix (base collocation points against new
+        elements, and the reverse).
+    Y : (N, n) array
+        ``B⁻¹ c``.
+    schur : tuple
+        LU factors of the Schur complement ``d - r Y``.
+    s_new, s_old : arrays
+        Enlarged field on the new and on the base elements.
+    w_new : (n,) array
+        ``w = r̃ - 1 + Δ̃`` at the new collocation points.
+    cols, rows : arrays or None
+        The antisymmetric matrix's new columns and rows (None for a reciprocal kernel).
+    d_u, d_lp : float
+        ``δŨ`` and ``δL̃_P`` (not divided by δX).
+    """
+
+    edge: int
+    advance: float
+    left: np.ndarray
+    right: np.ndarray
+    c: np.ndarray
+    r: np.ndarray
+    Y: np.ndarray
+    schur: tuple
+    s_new: np.ndarray
+    s_old: np.ndarray
+    w_new: np.ndarray
+    cols: np.ndarray | None
+    rows: np.ndarray | None
+    d_u: float
+    d_lp: float
 
 
 def limit_energy_release(ctx: EdgeContext) -> np.ndarray:

@@ -188,6 +188,27 @@ class MemoryTable:
         out += c0.take(j)
         return out
 
+    def antiderivative_slope(self, x):
+        """``d/dx`` of :meth:`antiderivative`: the slope of the same piecewise cubic (so that a
+        derivative built on it is the exact derivative of what the influence matrix uses; it
+        equals ``M_ζ[g]`` at the nodes and differs from it between them by the interpolation
+        error)."""
+        s = np.interp(wrap(x), self.nodes, self._index)
+        j = np.minimum(s.astype(np.intp), len(self.nodes) - 2)
+        t = s - j
+        _, c1, c2, c3 = self._coef
+        out = c3.take(j)
+        out *= 3.0 * t
+        out += 2.0 * c2.take(j)
+        out *= t
+        out += c1.take(j)
+        out /= self._widths.take(j)
+        return out
+
+    @functools.cached_property
+    def _widths(self):
+        return np.diff(self.nodes)
+
     @functools.cached_property
     def _index(self):
         return np.arange(len(self.nodes), dtype=float)

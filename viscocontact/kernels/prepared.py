@@ -144,6 +144,36 @@ class PreparedKernel:
             even = even + plus + self.correction(np.mod(-x, TWO_PI))
         return np.stack([acc / np.pi, even / np.pi])
 
+    def antiderivative_slope(self, x):
+        """``F̃'(x)``: the derivative of :meth:`antiderivative` as computed (the memory tables'
+        interpolants differentiated), i.e. the kernel without ``c0`` up to the tables' error.
+        An influence coefficient ``F̃(ξ - a) - F̃(ξ - b) + c0 (b - a)`` changes with its element
+        ends and collocation point by these slopes (:mod:`viscocontact.contact.sensitivity`)."""
+        x = np.asarray(x, dtype=float)
+        acc = self.instantaneous * log_kernel(x)
+        for wi, tab in zip(self.weights, self.tables):
+            acc = acc + wi * tab.antiderivative_slope(x)
+        if self.correction is not None:
+            acc = acc + self.correction(np.mod(x, TWO_PI), 1)
+        return acc / np.pi
+
+    def slope_pair(self, x):
+        """``[F̃'(x), E'(x)]`` stacked: :meth:`antiderivative_slope` and the derivative of
+        :meth:`even_antiderivative` (``F̃'(x) - F̃'(-x)``, the non-reciprocal part of the kernel),
+        sharing each memory table's look-up at ``x``."""
+        x = np.asarray(x, dtype=float)
+        acc = self.instantaneous * log_kernel(x)
+        odd = np.zeros_like(x)
+        for wi, tab in zip(self.weights, self.tables):
+            plus = tab.antiderivative_slope(x)
+            acc = acc + wi * plus
+            odd = odd + wi * (plus - tab.antiderivative_slope(-x))
+        if self.correction is not None:
+            plus = self.correction(np.mod(x, TWO_PI), 1)
+            acc = acc + plus
+            odd = odd + plus - self.correction(np.mod(-x, TWO_PI), 1)
+        return np.stack([acc / np.pi, odd / np.pi])
+
     def values(self, x):
         """The kernel ``G̃_V(x)`` of eq. 4.19 (times ``S_m`` geometry, plus ``c0``) at points ``x``."""
         x = np.asarray(x, dtype=float)

@@ -90,7 +90,8 @@ class Path:
             # the fallback march only once the step is small enough for a fold to be likely
             trial = eq.solve(state.edges, Control.penetration_of(d_next),
                              use_fallback=step < self.path_step / 16,
-                             budget=APPROACH_BUDGET, refine=d_next == d_end)
+                             budget=APPROACH_BUDGET, refine=d_next == d_end,
+                             polish=d_next == d_end)
             if trial.outcome is Outcome.CONVERGED:
                 state, d_prev = trial, d_next
                 step = min(step * 1.5, self.path_step)
@@ -179,7 +180,7 @@ class Path:
         (NaN when that solve does not converge)."""
         fields = state.fields
         trial = self.eq.solve(state.edges, Control.penetration_of(fields.penetration - eps),
-                              use_fallback=False, budget=APPROACH_BUDGET)
+                              use_fallback=False, budget=APPROACH_BUDGET, polish=False)
         if trial.outcome is not Outcome.CONVERGED:
             return np.nan
         return (fields.mean_pressure - trial.fields.mean_pressure) / eps
@@ -215,7 +216,8 @@ class Path:
             if step < 1e-6 * self.path_step:
                 break
             d_next = state.fields.penetration - step
-            trial = eq.solve(state.edges, Control.penetration_of(d_next), budget=APPROACH_BUDGET)
+            trial = eq.solve(state.edges, Control.penetration_of(d_next), budget=APPROACH_BUDGET,
+                             polish=False)
             if trial.outcome is not Outcome.CONVERGED:
                 step *= 0.5
                 continue

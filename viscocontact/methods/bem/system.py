@@ -15,6 +15,7 @@ import numpy as np
 from ...contact.edges import EdgeContext
 from ...contact.fields import solve_fields
 from ...contact.mesh import build_mesh, zone_patterns
+from ...contact.sensitivity import FieldSensitivity
 from ...contact.topology import TopologyChange, repair
 from .sets import MIN_GAP, MIN_WIDTH
 
@@ -67,6 +68,7 @@ class EdgeSystem:
         self.evaluations = 0
         self.last_valid = None      # last edge vector that was a valid contact set
         self._last_size = None      # max |r| where the previous Jacobian was taken
+        self._derivatives = None    # (x key, derivatives) of the last analytic Jacobian
 
     def evaluate(self, x):
         """``(fields, ctx, r)`` at ``x`` (the last evaluation is cached)."""
@@ -92,7 +94,45 @@ class EdgeSystem:
     def residual(self, x):
         return self.evaluate(np.asarray(x, dtype=float))[2]
 
+    def derivatives(self, x):
+        """``(J, c)``: the Jacobian ``∂r/∂x`` at the control and ``c = ∂r/∂(control value)`` at
+        fixed edges, from the adhesion model's analytic derivatives through one adjoint pass on
+        the factorisation at hand (:mod:`~viscocontact.contact.sensitivity`); None when the
+        model does not give them (:meth:`AdhesionModel.residual_derivatives`) or the residual
+        is not finite. Cached for the last ``x``.
+
+        Under load control the penetration follows the edges: ``dΔ̃/dx = -(∂p̃∞/∂x)/(∂p̃∞/∂Δ̃)``,
+        so ``J = ∂r/∂x + (∂r/∂Δ̃) dΔ̃/dx`` and ``c = (∂r/∂Δ̃)/(∂p̃∞/∂Δ̃)``.
+        """
+        x = np.asarray(x, dtype=float)
+        key = x.tobytes()
+        if self._derivatives is not None and self._derivatives[0] == key:
+            return self._derivatives[1]
+        fields, ctx, r = self.evaluate(x)
+        out = None
+        if fields is not None and np.all(np.isfinite(r)):
+            sens = FieldSensitivity(fields, self.prep.kernel, self.prep.shape, self.spec,
+                                    self.zones, self.counts)
+            d = self.adhesion.residual_derivatives(ctx, sens)
+            if d is not None and np.all(np.isfinite(d)):
+                J, c = d[:, :-1], d[:, -1]
+                if self.control.is_load:
+                    dp = sens.pressure()
+                    J = J - np.outer(c, dp[:-1] / dp[-1])
+                    c = c / dp[-1]
+                out = (J, c)
+        self._derivatives = (key, out)
+        return out
+
     def jacobian(self, x):
+        """``∂r/∂x``: analytic when the adhesion model gives derivatives (:meth:`derivatives`),
+        else by forward differences (:meth:`difference_jacobian`)."""
+        d = self.derivatives(x)
+        if d is not None:
+            return d[0]
+        return self.difference_jacobian(x)
+
+    def difference_jacobian(self, x):
         """Forward-difference Jacobian: block-diagonal by grouping, full when that is too slow.
 
         Grouped: all left edges are moved together, then all right edges, two residual
