@@ -100,10 +100,10 @@ class EnergyBalance(AdhesionModel):
             du = total - dlp
             used[:] = 0.0
             return du, dlp, used
+        used[:] = [self._advance(ctx, i) for i in range(n)]
+        ctx.prepare_borders(enumerate(used))
         for i in range(n):
-            dx = self._advance(ctx, i)
-            du[i], dlp[i] = ctx.energy_release(i, dx)
-            used[i] = dx
+            du[i], dlp[i] = ctx.energy_release(i, used[i])
         sign = np.where(k >= 0, 1.0, -1.0)
         return sign * np.abs(du + dlp) - dlp, dlp, used
 

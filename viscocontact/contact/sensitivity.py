@@ -33,7 +33,7 @@ import numpy as np
 from scipy.linalg import lu_solve
 
 from .edges import sif_calibration
-from .fields import N_FIT, _POWERS, _avg_power
+from .fields import _POWERS, N_FIT, _avg_power
 from .mesh import contact_spec, element_counts, graded_nodes
 
 #: Relative step of the central difference of a contact's node pattern in its half-width.
@@ -59,9 +59,10 @@ def node_velocities(a: float, b: float, spec, zone) -> tuple[np.ndarray, np.ndar
 
 def _edge_weights(nodes: np.ndarray, spec) -> tuple[np.ndarray, np.ndarray]:
     """Weights ``w`` with calibrated ``K̃ = w·σ`` on the first (last) fitted elements of one
-    contact: the left and the right edge, ``spec`` with the contact's element count (:func:`~viscocontact.contact.fields.stress_intensity`
-    and :meth:`~viscocontact.contact.edges.EdgeContext.stress_intensity`, the same arithmetic
-    up to the least-squares solver)."""
+    contact, its left and its right edge; ``spec`` has the contact's element count. The same
+    arithmetic as :func:`~viscocontact.contact.fields.stress_intensity` with the calibration of
+    :meth:`~viscocontact.contact.edges.EdgeContext.stress_intensity`, up to the least-squares
+    solver."""
     left, right = nodes[:-1], nodes[1:]
     n_fit = min(N_FIT, max(3, len(left) // 2))
     xl, xr = nodes[0], nodes[-1]
@@ -119,7 +120,8 @@ class FieldSensitivity:
             left_idx[sl] = k0 + np.arange(m)
             right_idx[sl] = k0 + np.arange(1, m + 1)
             k0 += m + 1
-        #: node positions and velocities (K, D); element q runs from node left_idx[q] to right_idx[q]
+        #: node positions and velocities (K, D); element q runs from node left_idx[q] to
+        #: node right_idx[q]
         self.nodes = np.concatenate(nodes)
         self.node_vel = np.concatenate(vel)
         self.left_idx, self.right_idx = left_idx, right_idx
@@ -226,11 +228,12 @@ class FieldSensitivity:
         border = ctx.border(i, dx)
         if border is None:
             return None
-        f, mesh, k = self.fields, self.fields.mesh, self.kernel
+        f, mesh = self.fields, self.fields.mesh
         D = self.n_dirs
         ddx = np.zeros(D) if ddx is None else np.asarray(ddx, dtype=float)
         sig, h, w = f.sigma, mesh.width, f.rhs0 + f.penetration
-        s_old, s_new, h_n, w_n = border.s_old, border.s_new, border.right - border.left, border.w_new
+        s_old, s_new, w_n = border.s_old, border.s_new, border.w_new
+        h_n = border.right - border.left
         n = len(s_new)
         # new nodes: translated with edge i, stretched with the advance
         new_nodes = np.append(border.left, border.right[-1])
