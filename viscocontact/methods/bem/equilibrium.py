@@ -67,6 +67,14 @@ class Equilibrium:
         return (type(self.adhesion).residual_derivatives
                 is not AdhesionModel.residual_derivatives)
 
+    @property
+    def jacobian_solver(self) -> bool:
+        """Whether the solver asks for Jacobians (the built-in Newton, Broyden and nonlinear
+        CG; a bisection march does not)."""
+        from ...solvers._fd import FiniteDifferenceOptions
+
+        return isinstance(self.solver, FiniteDifferenceOptions)
+
     def system(self, control: Control, edges, counts=None) -> EdgeSystem:
         """The edge system of ``edges`` (element counts from the mesh policy unless given)."""
         if counts is None:

@@ -55,7 +55,7 @@ class Path:
         touch = Control.penetration_of(d0)
         # with analytic Jacobians a first contact that has an equilibrium near the first-touch
         # guess converges in 5-15 evaluations; one that jumps open ran 200 iterations before
-        first = ({"budget": APPROACH_BUDGET, "polish": False} if eq.analytic
+        first = ({"budget": APPROACH_BUDGET, "polish": False} if self.quick
                  else {"polish": False})
         if self.wants_to_grow(edges, touch):
             # adhesion pulls the first contact open at once (a JKR-like jump): look for the state
@@ -151,10 +151,18 @@ class Path:
     def budget(self) -> int:
         """Residual evaluations allowed to one solver call of an approach step that can still be
         halved: fewer when the step starts from the predicted state with analytic Jacobians (a
-        converging step then takes 3-10, and one near a fold fails sooner). The fallback march
-        of the smallest step, whose failure sends the contact jumping, always gets
-        :data:`APPROACH_BUDGET`."""
-        return APPROACH_BUDGET_ANALYTIC if self.predict and self.eq.analytic else APPROACH_BUDGET
+        converging step of Newton or Broyden then takes 3-10, and one near a fold fails
+        sooner; :attr:`quick`). The fallback march of the smallest step, whose failure sends the
+        contact jumping, always gets :data:`APPROACH_BUDGET`."""
+        return APPROACH_BUDGET_ANALYTIC if self.quick else APPROACH_BUDGET
+
+    @property
+    def quick(self) -> bool:
+        """Whether approach steps start from predictions and the solver uses the analytic
+        Jacobians (Newton, Broyden, nonlinear CG): then a solve that has not converged in a few
+        evaluations is near a fold. A march without Jacobians (bisection) takes 20-60
+        evaluations a step and keeps the full budgets."""
+        return self.predict and self.eq.analytic and self.eq.jacobian_solver
 
     def tangent(self, state: State, load: bool) -> np.ndarray | None:
         """``dx/dΔ̃`` (``load``: ``dx/dp̃∞``) at a converged state, from the derivatives of the
