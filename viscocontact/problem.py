@@ -92,7 +92,9 @@ class ContactProblem:
     fallback: NonlinearSolver | None = attrs.field(
         factory=lambda: Bisection(initial_step=2e-3, growth=1.5))
     method: SolutionMethod = attrs.field(factory=lambda: _default_method(),
-                                         validator=attrs.validators.instance_of(SolutionMethod))
+                                         # attrs' instance_of is typed for concrete classes
+                                         validator=attrs.validators.instance_of(
+                                             SolutionMethod))  # type: ignore[type-abstract]
 
     def __attrs_post_init__(self):
         from .scene import Load

@@ -9,9 +9,18 @@ Contract for implementers
    (``σ̃√(2π r̃)``), so that one tolerance means the same thing for every model.
 3. :meth:`edge_terms` reports, per edge, ``δŨ/δX̃`` and ``δL̃_P/δX̃`` (stored-energy sign; they add
    up to ``2πγ̃/Λ̃²`` at equilibrium, eq. 4.20) and the effective work of adhesion (eq. 4.56).
+4. Optionally, :meth:`residual_derivatives` returns the derivatives of the residuals with respect
+   to every edge (at fixed penetration) and to the penetration (at fixed edges), an array of
+   shape ``(n_edges, n_edges + 1)``. It receives the context and a
+   :class:`~viscocontact.contact.sensitivity.FieldSensitivity` (``dfields``), which
+   differentiates the stress-intensity factors (``dfields.stress_intensity()``), the finite-δX
+   energy release (``dfields.energy_release(ctx, i, dx, ddx)``) and any linear functional of the
+   stresses (``dfields.linear``) through the factorisation already at hand. The solvers then get
+   the Jacobian for about the cost of one residual; the default (``None``) makes the orchestrator
+   difference the residuals instead (two to ``n_edges`` extra evaluations per Jacobian).
 
-Both receive an :class:`~viscocontact.contact.edges.EdgeContext`, which computes stress-intensity
-factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
+Every method receives an :class:`~viscocontact.contact.edges.EdgeContext`, which computes
+stress-intensity factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
 """
 from __future__ import annotations
 
@@ -74,6 +83,12 @@ class AdhesionModel(abc.ABC):
     @abc.abstractmethod
     def residuals(self, ctx) -> np.ndarray:
         """One residual per edge, in stress-intensity units (see the contract)."""
+
+    def residual_derivatives(self, ctx, dfields) -> np.ndarray | None:
+        """``∂r_i/∂X_j`` at fixed penetration and ``∂r_i/∂Δ̃`` at fixed edges, shape
+        ``(n_edges, n_edges + 1)`` (the penetration last), or None when the model does not
+        provide them (contract item 4)."""
+        return None
 
     @abc.abstractmethod
     def edge_terms(self, ctx) -> EdgeTerms:

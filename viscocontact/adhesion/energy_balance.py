@@ -53,20 +53,37 @@ class EnergyBalance(AdhesionModel):
         return (self.edge_perturbation,) if self.edge_perturbation > 0 else ()
 
     def _advance(self, ctx, i: int) -> float:
+        return self._advance_and_slope(ctx, i)[0]
+
+    def _advance_and_slope(self, ctx, i: int):
+        """The advance of edge ``i`` and its derivatives in the edges (``(n_edges,)``): ``δX``
+        unless a quarter of the half-width or half the gap to the next contact is smaller."""
         edges = ctx.mesh.edges
+        n = len(edges)
         j = i // 2
         half = 0.5 * (edges[2 * j + 1] - edges[2 * j])
-        limit = 0.25 * half
-        if len(edges) > 2:
+        slope = np.zeros(n)
+        slope[2 * j], slope[2 * j + 1] = -0.125, 0.125
+        limit = (0.25 * half, slope)
+        candidates = [(float(self.edge_perturbation), np.zeros(n)), limit]
+        slope = np.zeros(n)
+        if n > 2:
             if i % 2:   # right edge: distance to the next contact's left edge (periodic)
-                nxt = edges[(i + 1) % len(edges)] + (2 * np.pi if i + 1 == len(edges) else 0.0)
-                limit = min(limit, 0.5 * (nxt - edges[i]))
+                nxt = edges[(i + 1) % n] + (2 * np.pi if i + 1 == n else 0.0)
+                slope[(i + 1) % n], slope[i] = 0.5, -0.5
+                candidates.append((0.5 * (nxt - edges[i]), slope))
             else:
                 prv = edges[i - 1] - (2 * np.pi if i == 0 else 0.0)
-                limit = min(limit, 0.5 * (edges[i] - prv))
+                slope[i], slope[i - 1] = 0.5, -0.5
+                candidates.append((0.5 * (edges[i] - prv), slope))
         else:
-            limit = min(limit, 0.5 * (2 * np.pi - (edges[1] - edges[0])))
-        return min(self.edge_perturbation, limit)
+            slope[0], slope[1] = 0.5, -0.5
+            candidates.append((0.5 * (2 * np.pi - (edges[1] - edges[0])), slope))
+        value, slope = candidates[0]
+        for v, d in candidates[1:]:       # the first smallest, as min() takes it
+            if v < value:
+                value, slope = v, d
+        return value, slope
 
     def _release(self, ctx):
         """(δU/δX, δL_P/δX, δX used) at every edge."""
@@ -83,10 +100,10 @@ class EnergyBalance(AdhesionModel):
             du = total - dlp
             used[:] = 0.0
             return du, dlp, used
+        used[:] = [self._advance(ctx, i) for i in range(n)]
+        ctx.prepare_borders(enumerate(used))
         for i in range(n):
-            dx = self._advance(ctx, i)
-            du[i], dlp[i] = ctx.energy_release(i, dx)
-            used[i] = dx
+            du[i], dlp[i] = ctx.energy_release(i, used[i])
         sign = np.where(k >= 0, 1.0, -1.0)
         return sign * np.abs(du + dlp) - dlp, dlp, used
 
@@ -97,6 +114,24 @@ class EnergyBalance(AdhesionModel):
             du, dlp, _ = self._release(ctx)
             g = du + dlp
         return np.sign(g) * np.sqrt(4 * np.abs(g)) - np.sqrt(4 * self.target(ctx.amplitude))
+
+    def residual_derivatives(self, ctx, dfields):
+        if self.edge_perturbation == 0.0:
+            return np.sqrt(ctx.edge_compliance) * dfields.stress_intensity()
+        n = ctx.n_edges
+        out = np.empty((n, dfields.n_dirs))
+        g = np.empty(n)
+        for i in range(n):
+            dx, slope = self._advance_and_slope(ctx, i)
+            d = dfields.energy_release(ctx, i, dx, np.append(slope, 0.0))
+            if d is None:               # a re-meshed advance: the caller differences
+                return None
+            du, dlp = ctx.energy_release(i, dx)
+            g[i], out[i] = du + dlp, d
+        # the residual is sign(K̃)·√(4|δŨ/δX̃ + δL̃_P/δX̃|) - √(4·target) (see _release)
+        sign = np.where(ctx.stress_intensity() >= 0, 1.0, -1.0) * np.sign(g)
+        with np.errstate(divide="ignore"):
+            return out * (sign / np.sqrt(np.abs(g)))[:, None]
 
     def edge_terms(self, ctx) -> EdgeTerms:
         du, dlp, used = self._release(ctx)

@@ -15,6 +15,9 @@ class NoAdhesion(AdhesionModel):
     def residuals(self, ctx) -> np.ndarray:
         return ctx.stress_intensity()
 
+    def residual_derivatives(self, ctx, dfields):
+        return dfields.stress_intensity()
+
     def edge_terms(self, ctx) -> EdgeTerms:
         k = ctx.stress_intensity()
         n = len(k)

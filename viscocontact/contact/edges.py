@@ -60,7 +60,7 @@ def _calibration_table(elements: int, exponent: float, grading: float, zones: bo
 
 
 def _build_calibration_table(elements, exponent, grading, zones):
-    from scipy.interpolate import PchipInterpolator, RegularGridInterpolator
+    from scipy.interpolate import PchipInterpolator
 
     from ..kernels.half_plane import HalfPlane
     from ..rheology.elastic import Elastic
@@ -73,8 +73,26 @@ def _build_calibration_table(elements, exponent, grading, zones):
     ratios = [[_fitted_ratio(pk, MeshSpec(elements=elements, exponent=exponent, grading=grading,
                                           smallest=rel * a), a) for rel in _CAL_REL]
               for a in _CAL_ALPHA]
-    return RegularGridInterpolator((np.log(_CAL_ALPHA), np.log(_CAL_REL)), np.array(ratios),
-                                   method="linear")
+    return _Bilinear(np.log(_CAL_ALPHA), np.log(_CAL_REL), np.array(ratios))
+
+
+class _Bilinear:
+    """Bilinear interpolation on a rectangular grid (the arithmetic of scipy's
+    ``RegularGridInterpolator(method="linear")`` without its per-call overhead, which was a
+    sixth of a residual evaluation); points are clipped to the grid beforehand."""
+
+    def __init__(self, x0: np.ndarray, x1: np.ndarray, values: np.ndarray):
+        self.x0, self.x1, self.values = x0, x1, values
+
+    def __call__(self, points: np.ndarray) -> np.ndarray:
+        p0, p1 = points[:, 0], points[:, 1]
+        i = np.clip(np.searchsorted(self.x0, p0, side="right") - 1, 0, len(self.x0) - 2)
+        j = np.clip(np.searchsorted(self.x1, p1, side="right") - 1, 0, len(self.x1) - 2)
+        t = (p0 - self.x0[i]) / (self.x0[i + 1] - self.x0[i])
+        u = (p1 - self.x1[j]) / (self.x1[j + 1] - self.x1[j])
+        v = self.values
+        return ((1 - t) * ((1 - u) * v[i, j] + u * v[i, j + 1])
+                + t * ((1 - u) * v[i + 1, j] + u * v[i + 1, j + 1]))
 
 
 def sif_calibration(spec: MeshSpec, half_width, first=None) -> np.ndarray:
@@ -209,8 +227,9 @@ class EdgeContext:
         """``A[l, q] = ∫_{e_q} [G̃(ξ_l - y) - G̃(y - ξ_l)] dy`` on the base mesh (cached)."""
         if getattr(self, "_abase", None) is None:
             m = self.mesh
-            self._abase = _antisymmetric_block(self.kernel.even_antiderivative, m.left, m.right,
-                                               m.left, m.right)
+            self._abase = (self.fields.antisymmetric if self.fields.antisymmetric is not None
+                           else _antisymmetric_block(self.kernel.even_antiderivative, m.left,
+                                                     m.right, m.left, m.right))
         return self._abase
 
     def nonconservative_work(self, before: FieldSolution, after: FieldSolution) -> float:
@@ -309,15 +328,48 @@ class EdgeContext:
         re-meshing noise of the contact interior enters ``U⁺ - U⁻`` or ``δL_P``. None when ``dx``
         is shorter than ``MIN_BORDER`` edge elements (no edge zone).
         """
-        new = self._new_elements(i, dx)
-        if new is None:
+        border = self.border(i, dx)
+        if border is None:
             return None
-        from scipy.linalg import lu_solve
+        return border.d_u / dx, border.d_lp / dx
 
-        a, b = new
-        xi = 0.5 * (a + b)
+    def border(self, i: int, dx: float) -> Border | None:
+        """The bordered enlarged field of edge ``i`` advanced by ``dx`` (cached; None when
+        ``dx`` is shorter than ``MIN_BORDER`` edge elements): what :meth:`bordered_release`
+        computes, kept for its derivatives (:mod:`~viscocontact.contact.sensitivity`)."""
+        key = (i, float(dx))
+        if key not in self._borders:
+            self.prepare_borders([key])
+        return self._borders[key]
+
+    @functools.cached_property
+    def _borders(self) -> dict:
+        return {}
+
+    def prepare_borders(self, advances) -> None:
+        """Compute the bordered fields of every ``(edge, δX)`` in ``advances`` at once (one
+        evaluation of the new rows and columns and one multiple right-hand-side solve for all
+        edges instead of one per edge) and cache them for :meth:`border`."""
+        todo = [(int(i), float(dx)) for i, dx in advances if (int(i), float(dx)) not in
+                self._borders]
+        new = []
+        for key in todo:
+            elements = self._new_elements(*key)
+            if elements is None:
+                self._borders[key] = None
+            else:
+                new.append((key, elements))
+        if not new:
+            return
+        from scipy.linalg import lu_factor, lu_solve
+
         base, mesh, k = self.fields, self.mesh, self.kernel
+        a = np.concatenate([e[0] for _, e in new])
+        b = np.concatenate([e[1] for _, e in new])
+        xi = 0.5 * (a + b)
+        bounds = np.cumsum([0] + [len(e[0]) for _, e in new])
         pair = getattr(k, "antiderivative_pair", None) if self.dissipative else None
+        cols = rows = None
         if pair is not None:      # influence and antisymmetric integrals share the table look-ups
             c, cols = element_integrals(pair, mesh.mid, a, b)
             r, rows = element_integrals(pair, xi, mesh.left, mesh.right)
@@ -326,27 +378,84 @@ class EdgeContext:
         else:
             c = k.influence(mesh.mid, a, b)                      # (N, n)
             r = k.influence(xi, mesh.left, mesh.right)          # (n, N)
-        d = k.influence(xi, a, b)                                # (n, n)
-        w_new = self.shape.heights(xi) - 1.0 + base.penetration
-        Y = lu_solve(base.lu, c, check_finite=False)
-        s_new = np.linalg.solve(d - r @ Y, w_new - r @ base.sigma)
-        s_old = base.sigma - Y @ s_new
-        h_new = b - a
-        w_old = base.rhs0 + base.penetration
-        d_u = -0.5 * (np.sum(mesh.width * (s_old - base.sigma) * w_old)
-                      + np.sum(h_new * s_new * w_new))
-        d_lp = 0.0
-        if self.dissipative:
-            a_sig, hsig_a = self._base_products()
-            if pair is None:
+            if self.dissipative:
                 E = k.even_antiderivative
                 cols = element_integrals(E, mesh.mid, a, b)      # rows: base, columns: new
                 rows = element_integrals(E, xi, mesh.left, mesh.right)   # new, base
-            hsig = mesh.width * base.sigma
-            q_ba = hsig_a @ s_old + hsig @ (cols @ s_new)
-            q_ab = (mesh.width * s_old) @ a_sig + (h_new * s_new) @ (rows @ base.sigma)
-            d_lp = float(-0.25 * (q_ba - q_ab))
-        return float(d_u) / dx, d_lp / dx
+        w_new = self.shape.heights(xi) - 1.0 + base.penetration
+        Y = lu_solve(base.lu, c, check_finite=False)
+        w_old = base.rhs0 + base.penetration
+        hsig = mesh.width * base.sigma
+        r_sigma = r @ base.sigma
+        if self.dissipative:
+            a_sig, hsig_a = self._base_products()
+            cols_hsig = hsig @ cols
+            rows_sigma = rows @ base.sigma
+        for n, ((i, dx), _) in enumerate(new):
+            sl = slice(bounds[n], bounds[n + 1])
+            ai, bi, yi = a[sl], b[sl], Y[:, sl]
+            d = k.influence(xi[sl], ai, bi)                      # (n, n)
+            schur = lu_factor(d - r[sl] @ yi, check_finite=False)
+            s_new = lu_solve(schur, w_new[sl] - r_sigma[sl], check_finite=False)
+            s_old = base.sigma - yi @ s_new
+            h_new = bi - ai
+            d_u = -0.5 * (np.sum(mesh.width * (s_old - base.sigma) * w_old)
+                          + np.sum(h_new * s_new * w_new[sl]))
+            d_lp = 0.0
+            if self.dissipative:
+                q_ba = hsig_a @ s_old + cols_hsig[sl] @ s_new
+                q_ab = (mesh.width * s_old) @ a_sig + (h_new * s_new) @ rows_sigma[sl]
+                d_lp = float(-0.25 * (q_ba - q_ab))
+            self._borders[(i, dx)] = Border(
+                edge=i, advance=dx, left=ai, right=bi, c=c[:, sl], r=r[sl], Y=yi, schur=schur,
+                s_new=s_new, s_old=s_old, w_new=w_new[sl],
+                cols=None if cols is None else cols[:, sl],
+                rows=None if rows is None else rows[sl], d_u=float(d_u), d_lp=d_lp)
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class Border:
+    """The bordered enlarged field of one edge advance (:meth:`EdgeContext.border`).
+
+    Attributes
+    ----------
+    edge : int
+    advance : float
+        ``δX`` (q0-scaled).
+    left, right : (n,) arrays
+        The new elements over the advance.
+    c, r : (N, n) and (n, N) arrays
+        New columns and rows of the influence matrix (base collocation points against new
+        elements, and the reverse).
+    Y : (N, n) array
+        ``B⁻¹ c``.
+    schur : tuple
+        LU factors of the Schur complement ``d - r Y``.
+    s_new, s_old : arrays
+        Enlarged field on the new and on the base elements.
+    w_new : (n,) array
+        ``w = r̃ - 1 + Δ̃`` at the new collocation points.
+    cols, rows : arrays or None
+        The antisymmetric matrix's new columns and rows (None for a reciprocal kernel).
+    d_u, d_lp : float
+        ``δŨ`` and ``δL̃_P`` (not divided by δX).
+    """
+
+    edge: int
+    advance: float
+    left: np.ndarray
+    right: np.ndarray
+    c: np.ndarray
+    r: np.ndarray
+    Y: np.ndarray
+    schur: tuple
+    s_new: np.ndarray
+    s_old: np.ndarray
+    w_new: np.ndarray
+    cols: np.ndarray | None
+    rows: np.ndarray | None
+    d_u: float
+    d_lp: float
 
 
 def limit_energy_release(ctx: EdgeContext) -> np.ndarray:

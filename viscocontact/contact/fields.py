@@ -17,6 +17,7 @@ import attrs
 import numpy as np
 from scipy.linalg import lu_factor, lu_solve
 
+from ..kernels.prepared import element_integrals
 from .mesh import Mesh
 
 N_FIT = 8          # elements used for each stress-intensity fit
@@ -74,12 +75,26 @@ class FieldSolution:
     matrix: np.ndarray
     lu: tuple
     rhs0: np.ndarray          # r̃(ξ) - 1 at the collocation points
+    #: ``∫_{e_q} [G̃(ξ_l - y) - G̃(y - ξ_l)] dy`` on the mesh when asked for (None otherwise)
+    antisymmetric: np.ndarray | None = None
 
 
 def solve_fields(mesh: Mesh, kernel, shape: NormalizedProfile, *, penetration=None,
-                 mean_pressure=None) -> FieldSolution:
-    """Solve eq. 4.31 on ``mesh`` in penetration or load control (exactly one given)."""
-    B = kernel.influence(mesh.mid, mesh.left, mesh.right)
+                 mean_pressure=None, antisymmetric: bool = False) -> FieldSolution:
+    """Solve eq. 4.31 on ``mesh`` in penetration or load control (exactly one given).
+
+    ``antisymmetric``: also return the matrix of the kernel's non-reciprocal part on the mesh
+    (the finite-δX energy balance's ``δL̃_P``, :mod:`~viscocontact.contact.edges`), computed with
+    the influence matrix so that the two share each memory table's look-ups.
+    """
+    pair = getattr(kernel, "antiderivative_pair", None)
+    A = None
+    if antisymmetric and pair is not None and (len(kernel.weights) > 0
+                                               or kernel.correction is not None):
+        B, A = element_integrals(pair, mesh.mid, mesh.left, mesh.right)
+        B += kernel.mean * mesh.width
+    else:
+        B = kernel.influence(mesh.mid, mesh.left, mesh.right)
     lu = lu_factor(B, check_finite=False)
     rhs0 = shape.heights(mesh.mid) - 1.0
     h = mesh.width
@@ -93,7 +108,7 @@ def solve_fields(mesh: Mesh, kernel, shape: NormalizedProfile, *, penetration=No
         sigma = s_r + delta * s_1
     p = float(-(h @ sigma) / (2 * np.pi))
     return FieldSolution(mesh=mesh, sigma=sigma, penetration=delta, mean_pressure=p, matrix=B,
-                         lu=lu, rhs0=rhs0)
+                         lu=lu, rhs0=rhs0, antisymmetric=A)
 
 
 def _avg_power(ra, rb, p):

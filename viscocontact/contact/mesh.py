@@ -190,6 +190,18 @@ def zone_patterns(edges: np.ndarray, spec: MeshSpec, counts=None) -> tuple:
     return tuple(out)
 
 
+def same_zones(first, second) -> bool:
+    """Whether two :func:`zone_patterns` results are equal (node for node)."""
+    if len(first) != len(second):
+        return False
+    for a, b in zip(first, second):
+        if (a is False) != (b is False):
+            return False
+        if a is not False and (a[1] != b[1] or not np.array_equal(a[0], b[0])):
+            return False
+    return True
+
+
 @attrs.frozen(kw_only=True, eq=False)
 class Mesh:
     """Elements of all contacts, concatenated contact by contact (left to right).

@@ -61,13 +61,15 @@ def wrap(x):
     return t
 
 
-def cl2(x):
+def cl2(x, *, wrapped: bool = False):
     """Clausen function ``Cl2(x) = Σ sin(m x)/m²`` (odd, 2π-periodic, max 1.0149 at π/3).
 
     Parameters
     ----------
     x : array_like
         Argument (any real).
+    wrapped : bool
+        ``x`` is already in ``[-π, π]`` (an array, which is then not copied by :func:`wrap`).
 
     Returns
     -------
@@ -79,7 +81,7 @@ def cl2(x):
     >>> round(float(cl2(np.pi / 3)), 12)
     1.01494160641
     """
-    t = wrap(x)
+    t = x if wrapped else wrap(x)
     t2 = t * t
     acc = np.full_like(t, _CL2_FAST[0])
     for c in _CL2_FAST[1:]:             # Horner in place (the same arithmetic, no temporaries)

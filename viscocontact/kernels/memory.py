@@ -166,16 +166,17 @@ class MemoryTable:
         """``M_ζ[Φ](x)`` by exact moments from the next node (slower, reference quality)."""
         return self._partial(x, self._phi, self._dphi, self.H, lambda s: -cl2(s), log_kernel)
 
-    def antiderivative(self, x):
+    def antiderivative(self, x, *, wrapped: bool = False):
         """``M_ζ[Φ](x) - M_ζ[Φ](0)``, the antiderivative of ``M_ζ[g]`` vanishing at 0 (fast path).
 
         Cubic Hermite interpolation of the node values with the exact slopes ``H' = M_ζ[g]``
         (linear on the two intervals touching the singular point 0, error ``O(h log h)``), stored
         as one polynomial in ``t = (x - x_j)/h_j`` per interval. The interval and ``t`` come from
         a single :func:`numpy.interp` of the node indices (``t`` to about ``n·ε`` ≈ 1e-12, which
-        moves the value by ``1e-12`` of one interval's increment).
+        moves the value by ``1e-12`` of one interval's increment). ``wrapped``: ``x`` is already
+        in ``[-π, π]`` (:func:`~viscocontact.kernels.clausen.wrap` is skipped).
         """
-        s = np.interp(wrap(x), self.nodes, self._index)
+        s = np.interp(x if wrapped else wrap(x), self.nodes, self._index)
         j = np.minimum(s.astype(np.intp), len(self.nodes) - 2)
         t = s - j
         c0, c1, c2, c3 = self._coef
@@ -187,6 +188,27 @@ class MemoryTable:
         out *= t
         out += c0.take(j)
         return out
+
+    def antiderivative_slope(self, x, *, wrapped: bool = False):
+        """``d/dx`` of :meth:`antiderivative`: the slope of the same piecewise cubic (so that a
+        derivative built on it is the exact derivative of what the influence matrix uses; it
+        equals ``M_ζ[g]`` at the nodes and differs from it between them by the interpolation
+        error)."""
+        s = np.interp(x if wrapped else wrap(x), self.nodes, self._index)
+        j = np.minimum(s.astype(np.intp), len(self.nodes) - 2)
+        t = s - j
+        _, c1, c2, c3 = self._coef
+        out = c3.take(j)
+        out *= 3.0 * t
+        out += 2.0 * c2.take(j)
+        out *= t
+        out += c1.take(j)
+        out /= self._widths.take(j)
+        return out
+
+    @functools.cached_property
+    def _widths(self):
+        return np.diff(self.nodes)
 
     @functools.cached_property
     def _index(self):

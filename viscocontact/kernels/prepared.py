@@ -21,7 +21,7 @@ import attrs
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from .clausen import TWO_PI, cl2, log_kernel
+from .clausen import TWO_PI, cl2, log_kernel, wrap
 from .memory import MemoryTable
 
 ZETA_RELAXED = 1e-12
@@ -106,12 +106,15 @@ class PreparedKernel:
     def antiderivative(self, x):
         """``F̃(x) = ∫_0^x G̃(s) ds`` without the constant ``c0`` part (periodic, F̃(0) = 0)."""
         x = np.asarray(x, dtype=float)
-        acc = -self.instantaneous * cl2(x)
+        w = wrap(x)
+        acc = cl2(w, wrapped=True)
+        acc *= -self.instantaneous
         for wi, tab in zip(self.weights, self.tables):
-            acc = acc + wi * tab.antiderivative(x)
+            acc += wi * tab.antiderivative(w, wrapped=True)
         if self.correction is not None:
-            acc = acc + self.correction(np.mod(x, TWO_PI))
-        return acc / np.pi
+            acc += self.correction(np.mod(x, TWO_PI))
+        acc /= np.pi
+        return acc
 
     def even_antiderivative(self, x):
         """``F̃(x) + F̃(-x)``: only the non-reciprocal (dissipative) part of the kernel survives.
@@ -132,17 +135,55 @@ class PreparedKernel:
         :meth:`even_antiderivative`, the same values), sharing each memory table's evaluation at
         ``x``: two table look-ups per branch instead of three."""
         x = np.asarray(x, dtype=float)
-        acc = -self.instantaneous * cl2(x)
-        even = np.zeros_like(x)
+        w = wrap(x)                      # once for every table (and -w is in [-π, π] too)
+        out = np.empty((2,) + x.shape)
+        acc, even = out[0], out[1]
+        np.multiply(cl2(w, wrapped=True), -self.instantaneous, out=acc)
+        even.fill(0.0)
         for wi, tab in zip(self.weights, self.tables):
-            plus = tab.antiderivative(x)
-            acc = acc + wi * plus
-            even = even + wi * (plus + tab.antiderivative(-x))
+            plus = tab.antiderivative(w, wrapped=True)
+            acc += wi * plus
+            plus += tab.antiderivative(-w, wrapped=True)
+            even += wi * plus
         if self.correction is not None:
             plus = self.correction(np.mod(x, TWO_PI))
+            acc += plus
+            even += plus
+            even += self.correction(np.mod(-x, TWO_PI))
+        out /= np.pi
+        return out
+
+    def antiderivative_slope(self, x):
+        """``F̃'(x)``: the derivative of :meth:`antiderivative` as computed (the memory tables'
+        interpolants differentiated), i.e. the kernel without ``c0`` up to the tables' error.
+        An influence coefficient ``F̃(ξ - a) - F̃(ξ - b) + c0 (b - a)`` changes with its element
+        ends and collocation point by these slopes (:mod:`viscocontact.contact.sensitivity`)."""
+        x = np.asarray(x, dtype=float)
+        acc = self.instantaneous * log_kernel(x)
+        for wi, tab in zip(self.weights, self.tables):
+            acc = acc + wi * tab.antiderivative_slope(x)
+        if self.correction is not None:
+            acc = acc + self.correction(np.mod(x, TWO_PI), 1)
+        return acc / np.pi
+
+    def slope_pair(self, x):
+        """``[F̃'(x), E'(x)]`` stacked: :meth:`antiderivative_slope` and the derivative of
+        :meth:`even_antiderivative` (``F̃'(x) - F̃'(-x)``, the non-reciprocal part of the kernel),
+        sharing each memory table's look-up at ``x``."""
+        x = np.asarray(x, dtype=float)
+        w = wrap(x)
+        acc = self.instantaneous * log_kernel(x)
+        odd = np.zeros_like(x)
+        for wi, tab in zip(self.weights, self.tables):
+            plus = tab.antiderivative_slope(w, wrapped=True)
+            acc += wi * plus
+            plus -= tab.antiderivative_slope(-w, wrapped=True)
+            odd += wi * plus
+        if self.correction is not None:
+            plus = self.correction(np.mod(x, TWO_PI), 1)
             acc = acc + plus
-            even = even + plus + self.correction(np.mod(-x, TWO_PI))
-        return np.stack([acc / np.pi, even / np.pi])
+            odd = odd + plus - self.correction(np.mod(-x, TWO_PI), 1)
+        return np.stack([acc / np.pi, odd / np.pi])
 
     def values(self, x):
         """The kernel ``G̃_V(x)`` of eq. 4.19 (times ``S_m`` geometry, plus ``c0``) at points ``x``."""
@@ -211,13 +252,30 @@ def element_integrals(antiderivative, points, left, right) -> np.ndarray:
     """``F(ξ_l - a_q) - F(ξ_l - b_q)`` for an antiderivative ``F``: integrals over elements.
 
     Neighbouring elements share an end (``b_q = a_{q+1}``), so ``F`` is evaluated once per
-    distinct end, about half the work of evaluating both ends of every element. ``F`` may return
+    distinct end, about half the work of evaluating both ends of every element; when the
+    elements come in chains of neighbours (a mesh's contacts), the element integrals are
+    differences of neighbouring columns, taken by slices. ``F`` may return
     several functions stacked along leading axes (shape ``(k,) + x.shape``, e.g.
     :meth:`PreparedKernel.antiderivative_pair`); so does the result.
     """
     xi = np.asarray(points, dtype=float)
     a = np.asarray(left, dtype=float)
     b = np.asarray(right, dtype=float)
+    starts = np.flatnonzero(a[1:] != b[:-1]) + 1
+    if a.size > 1 and 4 * (starts.size + 1) <= a.size:
+        # chains of adjacent elements (the contacts of a mesh): F at each chain's nodes, and
+        # every element the difference of two neighbouring columns, by slices (no gather)
+        starts = np.concatenate([[0], starts])
+        stops = np.append(starts[1:], a.size)
+        nodes = np.concatenate([np.append(a[s:e], b[e - 1]) for s, e in zip(starts, stops)])
+        values = antiderivative(xi[:, None] - nodes[None, :])
+        out = np.empty(values.shape[:-1] + (a.size,))
+        k = 0
+        for s, e in zip(starts, stops):
+            np.subtract(values[..., k:k + e - s], values[..., k + 1:k + e - s + 1],
+                        out=out[..., s:e])
+            k += e - s + 1
+        return out
     ends, where = np.unique(np.concatenate([a, b]), return_inverse=True)
     where = where.ravel()
     if ends.size == a.size + b.size:        # no shared ends

@@ -144,6 +144,49 @@ def starting_point(anchor: Mapping[str, Any] | None, target_penetration: float |
     return FIRST_TOUCH, None
 
 
+def secant_start(records: Sequence[Mapping[str, Any]], key: str, value: float, *,
+                 log: bool = False, phase: str | None = None) -> np.ndarray | None:
+    """The contact set of the next point of a chain predicted from its last two points, or None.
+
+    Along a continuation (ζ, or the penetration of a cycle) the edges move smoothly between
+    jumps, so the secant through the last two converged contact sets, extrapolated to the next
+    parameter ``value`` (in ``log`` scale for ζ), starts the solver closer than the last set does.
+    Only when the last two records both carry a contact set with the same number of contacts
+    (and the same ``phase`` when given), the next value continues in the same direction at most
+    twice as far, and the prediction is a valid contact set; each edge moves by at most half of
+    its contact's half-width (the whole move scaled by one factor). A pure function of the
+    records, so a resumed study makes the same prediction.
+    """
+    from ..contact.topology import repair
+
+    if len(records) < 2:
+        return None
+    older, last = records[-2], records[-1]
+    x0, x1 = carried_edges(older), carried_edges(last)
+    if x0 is None or x1 is None or x0.shape != x1.shape or x1.size == 0:
+        return None
+    if phase is not None and not (older.get("phase") == last.get("phase") == phase):
+        return None
+    v0, v1, v = float(older[key]), float(last[key]), float(value)
+    if log:
+        if min(v0, v1, v) <= 0:
+            return None
+        v0, v1, v = math.log(v0), math.log(v1), math.log(v)
+    if not (math.isfinite(v0) and math.isfinite(v1) and math.isfinite(v)) or v1 == v0:
+        return None
+    ratio = (v - v1) / (v1 - v0)
+    if not 0 < ratio <= 2:
+        return None
+    move = ratio * (x1 - x0)
+    half = np.repeat(0.5 * (x1[1::2] - x1[0::2]), 2)
+    big = np.max(np.abs(move) / (0.5 * half))
+    if not np.isfinite(big):
+        return None
+    out = x1 + move / max(big, 1.0)
+    _, changed, _, _ = repair(out, 1e-8, 1e-8)
+    return None if changed else out
+
+
 # ---- checking and parsing parameters ------------------------------------------------------------
 def real_list(name: str, values, *, lo: float | None = None, lo_open: bool = False,
               min_size: int = 1) -> tuple[float, ...]:

@@ -52,7 +52,7 @@ from ..errors import ValidationError
 from ..problem import Discretization
 from ..scene import Scene
 from .base import (Chain, Study, adhesion_gamma, check_scene, int_list, real_list, scene_variant,
-                   starting_point)
+                   secant_start, starting_point)
 from .point import ERROR, PointSpec, has_contact
 from .sweep import ADHESIONLESS, ADHESIVE, _discretization
 
@@ -239,6 +239,9 @@ class Cycle(Study):
             phase = RETRACT
         anchor = next((r for r in reversed(records) if has_contact(r)), None)
         started_from, initial = starting_point(anchor, target)
+        if initial is not None and initial.size:
+            predicted = secant_start(records, "target", target, phase=phase)
+            initial = initial if predicted is None else predicted
         spec = PointSpec(chain=chain.index, step=k, phase=phase, started_from=started_from,
                          fields=self.fields, labels=dict(chain.labels),
                          discretization=(None if self.discretization is None

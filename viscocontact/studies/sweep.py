@@ -23,7 +23,7 @@ from ..errors import ValidationError
 from ..problem import Discretization
 from ..scene import Scene
 from .base import (Chain, Study, adhesion_gamma, check_scene, int_list, log_zetas, real_list,
-                   scene_variant, starting_point)
+                   scene_variant, secant_start, starting_point)
 from .point import PointSpec, has_contact
 
 __all__ = ["Sweep", "log_zetas"]
@@ -192,6 +192,9 @@ class Sweep(Study):
             anchor = next((r for r in reversed(records) if has_contact(r)), None)
         target = chain.labels["load"] if self.control == "penetration" else None
         started_from, initial = starting_point(anchor, target)
+        if self.continuation and initial is not None and initial.size:
+            predicted = secant_start(records, "zeta", chain.zetas[k], log=True)
+            initial = initial if predicted is None else predicted
         spec = PointSpec(chain=chain.index, step=k, phase="sweep", started_from=started_from,
                          fields=self.fields, labels=dict(chain.labels),
                          discretization=(None if self.discretization is None

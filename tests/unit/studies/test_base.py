@@ -7,7 +7,7 @@ import pytest
 from viscocontact.errors import ValidationError
 from viscocontact.scene import Scene
 from viscocontact.studies.base import (log_zetas, parse_numbers, parse_seeds, scene_variant,
-                                       starting_point)
+                                       secant_start, starting_point)
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "scenes"
 
@@ -60,3 +60,43 @@ def test_starting_point_rules():
     assert starting_point(none, 0.2) == ("first touch", None)
     origin, edges = starting_point(none, 0.0)
     assert origin == "no contact" and edges.size == 0
+
+
+def _record(edges, **kw):
+    return {"converged": True, "n_contacts": len(edges) // 2, "full_contact": False,
+            "edges": np.asarray(edges, dtype=float), **kw}
+
+
+def test_the_secant_through_the_last_two_contact_sets_predicts_the_next():
+    """ζ-continuation: linear in log ζ; a cycle: linear in the penetration, within one phase."""
+    records = [_record([-0.50, 0.40], zeta=1e-2), _record([-0.52, 0.41], zeta=1e-1)]
+    assert np.allclose(secant_start(records, "zeta", 1.0, log=True), [-0.54, 0.42])
+    assert np.allclose(secant_start(records, "zeta", np.sqrt(0.1), log=True), [-0.53, 0.415])
+    steps = [_record([-0.30, 0.30], target=0.2, phase="approach"),
+             _record([-0.32, 0.31], target=0.25, phase="approach")]
+    assert np.allclose(secant_start(steps, "target", 0.3, phase="approach"), [-0.34, 0.32])
+
+
+def test_the_secant_is_not_used_across_changes():
+    base = _record([-0.50, 0.40], zeta=1e-2)
+    # a contact born in between, the direction reversed or the step too long, another phase
+    assert secant_start([base, _record([-0.5, 0.4, 1.0, 1.1], zeta=0.1)], "zeta", 1.0,
+                        log=True) is None
+    two = [base, _record([-0.52, 0.41], zeta=1e-1)]
+    assert secant_start(two, "zeta", 1e-2, log=True) is None
+    assert secant_start(two, "zeta", 1e2, log=True) is None
+    steps = [_record([-0.3, 0.3], target=0.2, phase="approach"),
+             _record([-0.32, 0.31], target=0.25, phase="approach")]
+    assert secant_start(steps, "target", 0.2, phase="retract") is None
+    # a failed point last
+    failed = dict(two[1], converged=False)
+    assert secant_start([base, failed], "zeta", 1.0, log=True) is None
+
+
+def test_the_secant_moves_no_edge_by_more_than_half_its_half_width():
+    """A fast change (an edge running before a jump) is followed only partway."""
+    records = [_record([-0.10, 0.10], zeta=1e-2), _record([-0.30, 0.10], zeta=1e-1)]
+    out = secant_start(records, "zeta", 1.0, log=True)
+    half = 0.5 * (0.10 + 0.30)
+    assert np.max(np.abs(out - records[-1]["edges"])) == pytest.approx(0.5 * half)
+    assert out[0] < -0.30 and out[1] == pytest.approx(0.10)

@@ -7,6 +7,7 @@ from viscocontact.errors import ValidationError
 from viscocontact.problem import ContactProblem, Discretization
 from viscocontact.scene import Scene
 from viscocontact.studies import Sweep, run
+from viscocontact.studies.base import secant_start
 from viscocontact.studies.parallel import single_blas_thread
 
 
@@ -38,18 +39,27 @@ def test_bad_parameters(adhesionless, options, field):
 
 
 def test_points_are_continued_from_their_neighbour(tmp_path, adhesionless, mesh):
-    """The stored points are the ContactProblem solves of a hand-written continuation."""
+    """The stored points are the ContactProblem solves of a hand-written continuation (from the
+    previous point's edges, and from the secant through the previous two once there are two)."""
     zetas = [0.1, 1.0, 10.0]
     data = run(Sweep(scene=adhesionless, zetas=zetas, discretization=mesh, fields=True),
                tmp_path / "s.h5", progress=None)
     assert data.complete and len(data) == 3
     assert data.points["started_from"].tolist() == ["first touch", "neighbour", "neighbour"]
-    previous = None
+    previous, done = None, []
     for i, zeta in enumerate(zetas):
         problem = ContactProblem.from_scene(attrs.evolve(adhesionless, zeta=zeta),
                                             discretization=Discretization(**mesh))
+        start = previous
+        if i >= 2 and done[-1].n_contacts == done[-2].n_contacts:
+            records = [{"converged": r.converged, "n_contacts": r.n_contacts,
+                        "full_contact": r.full_contact, "edges": r.edges.ravel(), "zeta": z}
+                       for r, z in zip(done[-2:], zetas[i - 2:i])]
+            predicted = secant_start(records, "zeta", zeta, log=True)
+            start = previous if predicted is None else predicted
         with single_blas_thread():
-            previous = problem.solve(initial=previous)
+            previous = problem.solve(initial=start)
+        done.append(previous)
         assert data.points["area"][i] == previous.area
         assert data.points["friction"][i] == previous.friction
         assert np.array_equal(data.points["edges"][i], previous.edges.ravel())

@@ -110,10 +110,14 @@ class Checks:
         return {"x": x, "pressure": pres, "displacement": u, "gap": np.where(within, 0.0, u - w)}
 
 
-def tensile_split(fields):
+def tensile_split(fields, widen: bool = False):
     """Split contacts that carry tension inside (an adhesionless solid cannot): the new edges,
     for each contact split its index and the middle of its tensile stretch, and the largest
-    tension as a fraction of the largest pressure (``None, [], 0.0`` without tension)."""
+    tension as a fraction of the largest pressure (``None, [], 0.0`` without tension).
+
+    The new inner edges are the ends of the tensile stretch; ``widen`` moves each out by half
+    the stretch's width (at most halfway to the contact's edges), for a split whose parts
+    merged again."""
     mesh = fields.mesh
     sig = fields.sigma
     scale = np.max(np.abs(sig)) if sig.size else 0.0
@@ -127,6 +131,10 @@ def tensile_split(fields):
             tension = max(tension, float(np.max(s[3:-3])) / scale)
             idx = np.flatnonzero(inner)
             lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
+            if widen:
+                a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
+                w = 0.5 * (hi - lo)
+                lo, hi = max(lo - w, 0.5 * (a + lo)), min(hi + w, 0.5 * (hi + b))
             out += [mesh.edges[2 * j], lo, hi, mesh.edges[2 * j + 1]]
             where.append((j, 0.5 * (lo + hi)))
         else:

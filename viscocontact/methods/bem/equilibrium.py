@@ -12,7 +12,7 @@ import attrs
 import numpy as np
 
 from ...adhesion.none import NoAdhesion
-from ...contact.mesh import element_counts
+from ...contact.mesh import element_counts, same_zones, zone_patterns
 from ...contact.topology import TopologyChange, repair
 from .checks import tensile_split
 from .sets import MIN_GAP, MIN_WIDTH, Control
@@ -59,6 +59,22 @@ class Equilibrium:
         self.log = log
         self._noise: dict[tuple, float] = {}      # round-off floor per (edges, elements)
 
+    @property
+    def analytic(self) -> bool:
+        """Whether the adhesion model gives residual derivatives (analytic Jacobians)."""
+        from ...adhesion.base import AdhesionModel
+
+        return (type(self.adhesion).residual_derivatives
+                is not AdhesionModel.residual_derivatives)
+
+    @property
+    def jacobian_solver(self) -> bool:
+        """Whether the solver asks for Jacobians (the built-in Newton, Broyden and nonlinear
+        CG; a bisection march does not)."""
+        from ...solvers._fd import FiniteDifferenceOptions
+
+        return isinstance(self.solver, FiniteDifferenceOptions)
+
     def system(self, control: Control, edges, counts=None) -> EdgeSystem:
         """The edge system of ``edges`` (element counts from the mesh policy unless given)."""
         if counts is None:
@@ -76,28 +92,43 @@ class Equilibrium:
         return r
 
     def solve(self, edges, control: Control, use_fallback: bool = True,
-              budget: int | None = None, refine: bool = True) -> State:
+              budget: int | None = None, refine: bool = True, polish: bool = True,
+              fallback_budget: int | None = None) -> State:
         """Equilibrium at ``control`` from ``edges`` (contact-set changes included).
 
         ``use_fallback = False`` skips the fallback march when the primary solver stops, and
         ``budget`` caps the residual evaluations of each solver call: the approach path uses both
         for its trial steps, since a solve that fails near a fold costs hundreds of evaluations
-        while a halved step (and at the end the snap) finds the jump anyway.
+        while a halved step (and at the end the snap) finds the jump anyway. ``fallback_budget``
+        caps the fallback's calls instead when given.
 
         ``refine = False`` reports a contact whose small tension and split alternate as a cycle
         instead of refining it (:data:`REFINED_TENSION`): the approach's intermediate steps,
         where two contacts about to merge pass through a nearly vanishing pressure between them
         for a moment; a halved step gets past it, and a refinement would stay for the rest of
         the solve.
+
+        ``polish``: a converged state is solved once more with the edge zones of its own edges
+        (the zones are fixed within a solve, from the edges it starts at, so the discretisation
+        would otherwise depend on the start by about 1e-7 in Ã); then the same root gives the same
+        answer whatever the path and the solver. The approach's intermediate steps skip it.
         """
         log = self.log
         tolerances = self.tolerances
+        fallback_tolerances = tolerances
+        if fallback_budget is not None:
+            fallback_tolerances = attrs.evolve(
+                tolerances, max_evaluations=min(fallback_budget, tolerances.max_evaluations))
         if budget is not None:
             tolerances = attrs.evolve(tolerances, max_evaluations=min(budget,
                                                                       tolerances.max_evaluations))
+            if fallback_budget is None:
+                fallback_tolerances = tolerances
         edges = np.asarray(edges, dtype=float)
         fallback_first = False
         converged_before_births: list[np.ndarray] = []
+        polished = not polish
+        just_born = False       # contacts were just born and pulled open by adhesion
         splits: list[np.ndarray] = []
         for _ in range(self.max_restarts):
             if edges.size == 0:
@@ -109,17 +140,19 @@ class Equilibrium:
             system = self.system(control, edges)
             try:
                 tolerances = self.noise_floor(system, edges, tolerances)
+                fallback_tolerances = attrs.evolve(fallback_tolerances,
+                                                   residual=tolerances.residual)
                 if fallback_first and self.fallback is not None:
                     fallback_first = False
-                    res = self.fallback.solve(system, edges, tolerances)
+                    res = self.fallback.solve(system, edges, fallback_tolerances)
                 else:
                     res = self.solver.solve(system, edges, tolerances)
-                if not res.converged and self.fallback is not None and use_fallback:
+                if not res.converged and self.fallback is not None and (use_fallback or just_born):
                     log.iterations += res.iterations
                     log.event(f"{type(self.solver).__name__} stopped ({res.status.value}); "
                               f"{type(self.fallback).__name__} takes over")
                     start = res.x if np.all(np.isfinite(res.x)) else edges
-                    res = self.fallback.solve(system, start, tolerances)
+                    res = self.fallback.solve(system, start, fallback_tolerances)
             except TopologyChange as change:
                 log.evaluations += system.evaluations
                 log.event(change.reason)
@@ -166,6 +199,14 @@ class Equilibrium:
                 log.event(f"{len(regions)} contact(s) born")
                 if full:
                     return State.full_contact()
+                if self.adhesion.work_of_adhesion > 0:
+                    # an adhesive contact is born far from its equilibrium, often next to a
+                    # neighbour it then merges with across a closing neck, which is where
+                    # Newton-type steps stall and the fallback march gets through
+                    merged = self.grow(merged, control, [(a, b) for (a, b, _) in regions])
+                    if merged is None:
+                        return State.full_contact()
+                    just_born = True
                 edges = merged
                 continue
             split, where, tension = ((None, [], 0.0) if not isinstance(self.adhesion, NoAdhesion)
@@ -197,6 +238,13 @@ class Equilibrium:
                 continue
             if split is not None:
                 splits.append(split)
+                if any(len(split) == len(y) and np.allclose(split, y, rtol=0, atol=1e-3)
+                       for y in splits[:-1]):
+                    # the parts of the last split merged again: their solve went to the
+                    # degenerate root where the gap closes (the stress intensity of both inner
+                    # edges vanishes as the gap does); start the parts further apart
+                    split = tensile_split(fields, widen=True)[0]
+                    log.event("split again with the gap widened")
                 log.event("adhesionless contact split where it carried tension "
                           f"(up to {tension:.2g} of the largest pressure)")
                 edges = split
@@ -209,10 +257,54 @@ class Equilibrium:
                           "to resolve the profile between collocation points")
                 edges = x
                 continue
+            if not polished and not same_zones(system.zones,
+                                               zone_patterns(x, self.spec, system.counts)):
+                polished = True
+                edges = x
+                continue
             return State(outcome=Outcome.CONVERGED, edges=x, fields=fields, ctx=ctx,
-                         residual=size, message="converged")
+                         residual=size, message="converged", system=system)
         return State(outcome=Outcome.NOT_CONVERGED, edges=edges, residual=np.inf,
                      message=f"contact set still changing after {self.max_restarts} restarts")
+
+    def grow(self, edges, control: Control, born) -> np.ndarray | None:
+        """``edges`` with the contacts just born (``born``: their ``(a, b)``) widened while their
+        edges want to grow (negative residual), each edge by steps that start at half the born
+        contact's half-width and double each time (so that an edge stops within twice the
+        distance it had to go); None when they close the contact over the period.
+
+        An adhesive contact is born with the width of the region where the profile penetrates
+        the check grid, far below its equilibrium: adhesion pulls it open at once (a JKR-like
+        jump in). A solver bounded to steps of a fraction of the half-width took 20-90
+        evaluations to widen it, or gave up when the jump reached a neighbour (the two merge);
+        one residual per doubling brings it within a step of its equilibrium, or to the merge.
+        """
+        x = np.asarray(edges, dtype=float).copy()
+        grow = np.zeros(len(x), dtype=bool)
+        for a, b in born:
+            at = np.flatnonzero(np.isclose(x[0::2], a, rtol=0, atol=1e-12)
+                                & np.isclose(x[1::2], b, rtol=0, atol=1e-12))
+            for j in at:
+                grow[2 * j:2 * j + 2] = True
+        outward = np.tile([-1.0, 1.0], len(x) // 2)
+        unit = 0.5 * np.repeat(0.5 * (x[1::2] - x[0::2]), 2)   # half the born half-width
+        factor = 1.0
+        while np.any(grow) and factor < 1e6:
+            r = self.residual_at(x, control)
+            if r is None or not np.all(np.isfinite(r)):
+                break
+            grow &= r < 0
+            if not np.any(grow):
+                break
+            trial = x + np.where(grow, factor * unit, 0.0) * outward
+            merged, changed, _, full = repair(trial, MIN_WIDTH, MIN_GAP)
+            if full:
+                return None
+            if changed:
+                self.log.event("a contact just born jumped open and merged")
+                return merged
+            x, factor = trial, 2.0 * factor
+        return x
 
     def noise_floor(self, system, x, tolerances):
         """``tolerances`` with the residual tolerance raised to the round-off floor of the edge

@@ -20,8 +20,9 @@ class Outcome(enum.Enum):
 @attrs.frozen(kw_only=True, eq=False)
 class State:
     """An equilibrium step's result: the outcome, the edges it ended at, the fixed-edge field
-    solution and edge context there (``None`` without contacts), the largest edge residual and a
-    message."""
+    solution and edge context there (``None`` without contacts), the largest edge residual, a
+    message, and for a converged state the edge system it was solved with (its derivatives there
+    give the path's tangent)."""
 
     outcome: Outcome
     edges: np.ndarray
@@ -29,6 +30,7 @@ class State:
     ctx: Any = None
     residual: float = 0.0
     message: str = ""
+    system: Any = None
 
     @property
     def converged(self) -> bool:

@@ -10,11 +10,13 @@ this contact set.
 """
 from __future__ import annotations
 
+import attrs
 import numpy as np
 
 from ...contact.edges import EdgeContext
 from ...contact.fields import solve_fields
 from ...contact.mesh import build_mesh, zone_patterns
+from ...contact.sensitivity import FieldSensitivity
 from ...contact.topology import TopologyChange, repair
 from ...deadline import check as check_deadline
 from .sets import MIN_GAP, MIN_WIDTH
@@ -37,6 +39,25 @@ def residual_scale(kernel) -> float:
     """
     k1 = abs(complex(kernel.compliance(1.0)))
     return max(1.0, 1.0 / k1) if k1 > 0 and np.isfinite(k1) else 1.0
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class EdgeDerivatives:
+    """Derivatives of the edge residuals of one contact set at one point.
+
+    Attributes
+    ----------
+    jacobian : (n, n) array
+        ``∂r/∂x`` at the system's control (penetration or load held fixed).
+    control : (n,) array
+        ``∂r/∂Δ̃`` or ``∂r/∂p̃∞`` at fixed edges: the control's own kind.
+    pressure : (n + 1,) array
+        ``∂p̃∞/∂x`` at fixed penetration and ``∂p̃∞/∂Δ̃`` at fixed edges (last).
+    """
+
+    jacobian: np.ndarray
+    control: np.ndarray
+    pressure: np.ndarray
 
 
 class EdgeSystem:
@@ -68,6 +89,7 @@ class EdgeSystem:
         self.evaluations = 0
         self.last_valid = None      # last edge vector that was a valid contact set
         self._last_size = None      # max |r| where the previous Jacobian was taken
+        self._derivatives = None    # (x key, derivatives) of the last analytic Jacobian
 
     def evaluate(self, x):
         """``(fields, ctx, r)`` at ``x`` (the last evaluation is cached). Every evaluation
@@ -83,7 +105,9 @@ class EdgeSystem:
             raise TopologyChange(reason, new, full)
         prep = self.prep
         mesh = build_mesh(x, self.spec, self.zones, self.counts)
-        fields = solve_fields(mesh, prep.kernel, prep.shape, **self.control.fields_kwargs())
+        # a finite edge advance: the energy balance needs the kernel's non-reciprocal part too
+        fields = solve_fields(mesh, prep.kernel, prep.shape, **self.control.fields_kwargs(),
+                              antisymmetric=self.adhesion.edge_advance() > 0)
         ctx = EdgeContext(fields, prep.kernel, prep.shape, self.spec, prep.shape.amplitude,
                           self.zones, self.counts)
         r = self.adhesion.residuals(ctx)
@@ -95,7 +119,45 @@ class EdgeSystem:
     def residual(self, x):
         return self.evaluate(np.asarray(x, dtype=float))[2]
 
+    def derivatives(self, x) -> EdgeDerivatives | None:
+        """The derivatives of the residuals at ``x`` from the adhesion model's analytic
+        derivatives through one adjoint pass on the factorisation at hand
+        (:mod:`~viscocontact.contact.sensitivity`); None when the model does not give them
+        (:meth:`AdhesionModel.residual_derivatives`) or the residual is not finite. Cached for
+        the last ``x``.
+
+        Under load control the penetration follows the edges: ``dΔ̃/dx = -(∂p̃∞/∂x)/(∂p̃∞/∂Δ̃)``,
+        so ``J = ∂r/∂x + (∂r/∂Δ̃) dΔ̃/dx`` and ``∂r/∂p̃∞ = (∂r/∂Δ̃)/(∂p̃∞/∂Δ̃)``.
+        """
+        x = np.asarray(x, dtype=float)
+        key = x.tobytes()
+        if self._derivatives is not None and self._derivatives[0] == key:
+            return self._derivatives[1]
+        fields, ctx, r = self.evaluate(x)
+        out = None
+        if fields is not None and np.all(np.isfinite(r)):
+            sens = FieldSensitivity(fields, self.prep.kernel, self.prep.shape, self.spec,
+                                    self.zones, self.counts)
+            d = self.adhesion.residual_derivatives(ctx, sens)
+            if d is not None and np.all(np.isfinite(d)):
+                J, c = d[:, :-1], d[:, -1]
+                dp = sens.pressure()
+                if self.control.is_load:
+                    J = J - np.outer(c, dp[:-1] / dp[-1])
+                    c = c / dp[-1]
+                out = EdgeDerivatives(jacobian=J, control=c, pressure=dp)
+        self._derivatives = (key, out)
+        return out
+
     def jacobian(self, x):
+        """``∂r/∂x``: analytic when the adhesion model gives derivatives (:meth:`derivatives`),
+        else by forward differences (:meth:`difference_jacobian`)."""
+        d = self.derivatives(x)
+        if d is not None:
+            return d.jacobian
+        return self.difference_jacobian(x)
+
+    def difference_jacobian(self, x):
         """Forward-difference Jacobian: block-diagonal by grouping, full when that is too slow.
 
         Grouped: all left edges are moved together, then all right edges, two residual

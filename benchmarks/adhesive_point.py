@@ -1,0 +1,95 @@
+"""Seconds, residual evaluations and iterations of one rough adhesive point, from first touch,
+next to a dense solve timed in the same run.
+
+    python benchmarks/adhesive_point.py [--seeds 11,12,13] [--crowded] [--profile FILE]
+
+The point (thesis §4.6 scene): ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=s)``,
+``StandardLinearSolid(beta=10)``, ``EnergyBalance(gamma=2.387e-7)``, p̃∞ = 0.1, ζ = 1e-2, the
+default mesh and the default solver of an adhesive scene (Broyden), from first touch.
+``--crowded``: the crowded corner instead, ζ = 1e-6, p̃∞ = 0.6, seeds 0-2 by default.
+
+The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one BLAS thread
+(median of five), measured in the same run so that the ratio does not depend on the machine's
+load. Prints one line per seed and the median; ``--profile FILE`` writes the cProfile statistics
+of the first seed to FILE instead of timing the rest.
+"""
+from __future__ import annotations
+
+import argparse
+import time
+
+import numpy as np
+
+
+def dense_solve_seconds(n: int = 2000, repeats: int = 5) -> float:
+    """Median seconds of ``np.linalg.solve`` on an ``n × n`` system with one BLAS thread."""
+    from viscocontact._blas import single_blas_thread
+
+    rng = np.random.default_rng(0)
+    A = rng.standard_normal((n, n)) + n * np.eye(n)
+    b = rng.standard_normal(n)
+    times = []
+    with single_blas_thread():
+        for _ in range(repeats):
+            t = time.perf_counter()
+            np.linalg.solve(A, b)
+            times.append(time.perf_counter() - t)
+    return float(np.median(times))
+
+
+def problem(seed: int, crowded: bool, solver=None):
+    from viscocontact.adhesion import EnergyBalance
+    from viscocontact.problem import ContactProblem
+    from viscocontact.profiles import SelfAffineProfile
+    from viscocontact.rheology import StandardLinearSolid
+    from viscocontact.solvers import Broyden
+
+    zeta, load = (1e-6, 0.6) if crowded else (1e-2, 0.1)
+    return ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
+                          rheology=StandardLinearSolid(beta=10.0),
+                          adhesion=EnergyBalance(gamma=2.387e-7), solver=solver or Broyden(),
+                          mean_pressure=load, zeta=zeta)
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--seeds", default=None, help="comma-separated (default 11,12,13; 0,1,2 "
+                                                  "with --crowded)")
+    ap.add_argument("--crowded", action="store_true", help="ζ = 1e-6, p̃∞ = 0.6")
+    ap.add_argument("--solver", default="broyden", choices=("broyden", "newton"))
+    ap.add_argument("--profile", default=None, help="write cProfile statistics of the first seed")
+    args = ap.parse_args(argv)
+    from viscocontact.solvers import Broyden, Newton
+
+    solver = {"broyden": Broyden, "newton": Newton}[args.solver]()
+    seeds = ([int(s) for s in args.seeds.split(",")] if args.seeds
+             else ([0, 1, 2] if args.crowded else [11, 12, 13]))
+    ref = dense_solve_seconds()
+    print(f"numpy 2000x2000 solve, one BLAS thread: {ref:.3f} s", flush=True)
+    print(f"{'seed':>4s} {'s':>8s} {'x solve':>8s} {'ev':>6s} {'it':>6s} {'area':>10s} {'n':>3s} "
+          "converged")
+    times = []
+    for seed in seeds:
+        prob = problem(seed, args.crowded, solver)
+        if args.profile:
+            import cProfile
+
+            cProfile.runctx("r = prob.solve()", globals(), locals_ := {"prob": prob},
+                            args.profile)
+            r = locals_["r"]
+            print(f"profile of seed {seed} written to {args.profile}: Ã = {r.area:.7f}, "
+                  f"{r.function_evaluations} evaluations, converged {r.converged}")
+            return
+        t = time.perf_counter()
+        r = prob.solve()
+        s = time.perf_counter() - t
+        times.append(s)
+        print(f"{seed:4d} {s:8.2f} {s / ref:8.1f} {r.function_evaluations:6d} {r.iterations:6d} "
+              f"{r.area:10.7f} {r.n_contacts:3d} {r.converged}", flush=True)
+    med = float(np.median(times))
+    target = "60 s" if args.crowded else "2 s, about 16 dense solves"
+    print(f"median {med:.2f} s = {med / ref:.1f} dense solves (target: {target})")
+
+
+if __name__ == "__main__":
+    main()

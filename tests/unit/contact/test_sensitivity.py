@@ -1,0 +1,183 @@
+"""The analytic edge Jacobian (``viscocontact.contact.sensitivity``) against central differences
+of the residuals it differentiates."""
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from viscocontact.adhesion import EnergyBalance, NoAdhesion
+from viscocontact.contact.sensitivity import FieldSensitivity
+from viscocontact.kernels import ConfinedLayer, HalfPlane
+from viscocontact.methods.bem.method import Solve
+from viscocontact.methods.bem.sets import Control
+from viscocontact.methods.bem.system import EdgeSystem
+from viscocontact.problem import ContactProblem, Discretization
+from viscocontact.profiles import SelfAffineProfile, Sinusoid
+from viscocontact.rheology import Elastic, StandardLinearSolid
+from viscocontact.solvers import Newton
+
+SLS = StandardLinearSolid(beta=10.0)
+ROUGH = SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=11)
+ADHESION = {"none": NoAdhesion(), "limit": EnergyBalance(gamma=1e-4, edge_perturbation=0.0),
+            "finite": EnergyBalance(gamma=1e-4)}
+
+
+@functools.cache
+def _solve(profile, rheology, zeta, adhesion, elements=32, kernel=None):
+    p = ContactProblem(profile=profile, rheology=rheology, solver=Newton(), adhesion=adhesion,
+                       mean_pressure=0.1, zeta=zeta, kernel=kernel or HalfPlane(),
+                       discretization=Discretization(elements=elements))
+    return Solve(p, p.prepare())
+
+
+def _system(edges, control, **kw) -> EdgeSystem:
+    return _solve(**kw).equilibrium.system(control, np.asarray(edges, dtype=float))
+
+
+def _with_control(system: EdgeSystem, value: float, x) -> np.ndarray:
+    """The residual at ``x`` for another control value, with the same zones and counts."""
+    other = EdgeSystem(system.prep, system.spec, system.adhesion,
+                       Control(system.control.kind, value), x, system.counts)
+    other.zones = system.zones
+    return other.residual(x)
+
+
+def _differences(system: EdgeSystem, x, rel: float):
+    """Central differences of the residuals in every edge (step ``rel`` times the smallest
+    half-width) and in the control value."""
+    x = np.asarray(x, dtype=float)
+    h = rel * np.min(0.5 * (x[1::2] - x[0::2]))
+    J = np.empty((len(x), len(x)))
+    for i in range(len(x)):
+        e = np.zeros(len(x))
+        e[i] = h
+        J[:, i] = (system.residual(x + e) - system.residual(x - e)) / (2 * h)
+    v = system.control.value
+    hc = 1e-5 * max(abs(v), 0.1)
+    c = (_with_control(system, v + hc, x) - _with_control(system, v - hc, x)) / (2 * hc)
+    return J, c
+
+
+def _assert_close(system, x, rel=1e-5, tol=2e-4):
+    d = system.derivatives(np.asarray(x, dtype=float))
+    J, c = d.jacobian, d.control
+    J_fd, c_fd = _differences(system, x, rel)
+    scale = np.max(np.abs(J_fd))
+    assert np.max(np.abs(J - J_fd)) <= tol * scale, (J, J_fd)
+    assert np.max(np.abs(c - c_fd)) <= tol * max(np.max(np.abs(c_fd)), 1e-3 * scale), (c, c_fd)
+    return J, J_fd
+
+
+# generic numbers (no calibration-table knot or zone threshold within the difference step)
+_OFFSET = 0.0123456789
+
+
+@settings(max_examples=12, deadline=None)
+@given(left=st.floats(0.05, 1.4), right=st.floats(0.05, 1.4),
+       zeta=st.sampled_from([1e-2, 1.0]), model=st.sampled_from(sorted(ADHESION)),
+       load=st.booleans())
+def test_one_contact_jacobian_equals_central_differences(left, right, zeta, model, load):
+    """Sinusoid Λ̃ = 0.1, SLS β = 10, 32 elements with edge zones: every model, both controls.
+    Central differences (step 1e-5 of the half-width) carry round-off of about 1e-10/h and a
+    truncation error of O(h²); they agree with the analytic Jacobian to 2e-4 of its largest
+    entry (measured: 1e-8 for the stress-intensity residuals, 1e-6 to 2e-5 for the finite-δX
+    energy balance)."""
+    edges = [-(left + _OFFSET), right + _OFFSET]
+    control = Control.load_of(0.1) if load else Control.penetration_of(0.3)
+    system = _system(edges, control, profile=Sinusoid(amplitude=0.1), rheology=SLS, zeta=zeta,
+                     adhesion=ADHESION[model])
+    _assert_close(system, edges)
+
+
+@pytest.mark.parametrize("model", sorted(ADHESION))
+def test_elastic_kernel_without_zones(model):
+    """An elastic kernel meshes with eq. 4.22 alone (no zones without a finite advance): the
+    nodes, the fit's element sizes and the calibration all move with the half-width."""
+    edges = [-0.7, 0.45]
+    system = _system(edges, Control.load_of(0.1), profile=Sinusoid(amplitude=0.1),
+                     rheology=Elastic(), zeta=0.0, adhesion=ADHESION[model])
+    _assert_close(system, edges)
+
+
+def test_layer_kernel_with_a_correction():
+    """A confined layer adds the spline of the geometry correction to the kernel's slopes."""
+    edges = [-0.6, 0.5]
+    system = _system(edges, Control.penetration_of(0.3), profile=Sinusoid(amplitude=0.1),
+                     rheology=SLS, zeta=0.3, adhesion=ADHESION["finite"],
+                     kernel=ConfinedLayer(thickness=0.7, poisson=0.3))
+    _assert_close(system, edges)
+
+
+ROUGH_EDGES = [4.47037, 4.62705, 4.70036, 5.09036, 5.16383, 5.20679, 5.31652, 5.39046]
+
+
+@pytest.mark.parametrize("load", [False, True])
+def test_four_rough_contacts_couple(load):
+    """Four contacts of the thesis rough profile (seed 11, ζ = 1e-2, the default finite δX):
+    the off-diagonal blocks (contacts interacting through the solid) are reproduced too."""
+    control = Control.load_of(0.1) if load else Control.penetration_of(0.35)
+    system = _system(ROUGH_EDGES, control, profile=ROUGH, rheology=SLS, zeta=1e-2,
+                     adhesion=EnergyBalance(gamma=2.387e-7))
+    J, _ = _assert_close(system, ROUGH_EDGES)
+    off = np.abs(J[0:2, 2:4]).max()
+    assert off > 1e-4 * np.abs(J).max()           # the coupling is there, and matched
+
+
+@pytest.mark.parametrize("gap", [1.9e-4, 3e-4])
+def test_an_advance_limited_by_the_gap(gap):
+    """Two contacts closer than 2δX: the advance is half the gap and moves with both edges."""
+    edges = [4.47037, 4.62705, 4.62705 + gap, 5.09036]
+    system = _system(edges, Control.penetration_of(0.35), profile=ROUGH, rheology=SLS, zeta=1e-2,
+                     adhesion=EnergyBalance(gamma=2.387e-7))
+    _assert_close(system, edges)
+
+
+def test_forward_stresses_and_load_equal_differences():
+    """``σ̇`` (forward mode) and ``dp̃∞/dx`` against central differences of the field solution."""
+    edges = np.array([-0.8, 0.55])
+    system = _system(edges, Control.penetration_of(0.3), profile=Sinusoid(amplitude=0.1),
+                     rheology=SLS, zeta=0.1, adhesion=ADHESION["none"])
+    fields = system.evaluate(edges)[0]
+    sens = FieldSensitivity(fields, system.prep.kernel, system.prep.shape, system.spec,
+                            system.zones, system.counts)
+    ds, dp = sens.stresses(), sens.pressure()
+    h = 1e-6
+    for i in range(2):
+        e = np.zeros(2)
+        e[i] = h
+        fp, fm = system.evaluate(edges + e)[0], system.evaluate(edges - e)[0]
+        fd = (fp.sigma - fm.sigma) / (2 * h)
+        assert np.max(np.abs(ds[:, i] - fd)) <= 1e-5 * np.max(np.abs(fd))
+        assert dp[i] == pytest.approx((fp.mean_pressure - fm.mean_pressure) / (2 * h), rel=1e-6)
+    # the penetration direction: σ̇ = B⁻¹1
+    assert np.allclose(ds[:, -1], np.linalg.solve(fields.matrix, np.ones(len(fields.sigma))))
+
+
+class _Opaque(EnergyBalance):
+    """An adhesion model that gives no derivatives (the interface's default)."""
+
+    def residual_derivatives(self, ctx, dfields):
+        return None
+
+
+def test_a_model_without_derivatives_is_differenced():
+    edges = np.array([-0.8, 0.55])
+    kw = {"profile": Sinusoid(amplitude=0.1), "rheology": SLS, "zeta": 0.1}
+    opaque = _system(edges, Control.penetration_of(0.3), adhesion=_Opaque(gamma=1e-4), **kw)
+    analytic = _system(edges, Control.penetration_of(0.3), adhesion=ADHESION["finite"], **kw)
+    opaque.residual(edges)
+    before = opaque.evaluations
+    J_fd = opaque.jacobian(edges)
+    assert opaque.evaluations == before + 2          # grouped forward differences
+    assert opaque.derivatives(edges) is None
+    analytic.residual(edges)
+    before = analytic.evaluations
+    J = analytic.jacobian(edges)
+    assert analytic.evaluations == before            # no residual evaluation
+    # forward differences with steps of 1e-7 of the half-width carry the residuals' round-off
+    # (about 1e-10) over the step: 2e-4 of the largest entry here
+    assert np.allclose(J, J_fd, rtol=0, atol=1e-3 * np.abs(J).max())

@@ -1,0 +1,97 @@
+"""The approach path's predictor (``Path.predicted``) and step control, and the growth of contacts
+born adhesive (``Equilibrium.grow``)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from viscocontact.adhesion import EnergyBalance
+from viscocontact.methods.bem.method import Solve
+from viscocontact.methods.bem.sets import Control
+from viscocontact.methods.bem.state import Outcome
+from viscocontact.problem import ContactProblem, Discretization
+from viscocontact.profiles import SelfAffineProfile, Sinusoid
+from viscocontact.rheology import StandardLinearSolid
+from viscocontact.solvers import Broyden, Newton
+
+SLS = StandardLinearSolid(beta=10.0)
+WAVY = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=SLS, solver=Newton(),
+                      adhesion=EnergyBalance(gamma=1e-4), mean_pressure=0.1, zeta=1e-3,
+                      discretization=Discretization(elements=32))
+
+
+def _both(problem):
+    """The solve from first touch without and with the predictor."""
+    out = []
+    for predict in (False, True):
+        solve = Solve(problem, problem.prepare())
+        solve.path.predict = predict
+        out.append(solve.run(None, False))
+    return out
+
+
+def _assert_same_equilibrium(plain, predicted, edges_to):
+    assert plain.converged and predicted.converged, (plain.message, predicted.message)
+    assert predicted.n_contacts == plain.n_contacts
+    assert np.allclose(predicted.edges, plain.edges, rtol=0, atol=edges_to)
+    assert predicted.area == pytest.approx(plain.area, rel=edges_to)
+    assert predicted.function_evaluations < plain.function_evaluations
+
+
+def test_the_predicted_path_reaches_the_equilibrium_of_the_plain_one():
+    """Adhesive sinusoid (Λ̃ = 0.1, Γ̃ = 0.01, ζ = 1e-3, Johnson-like branch), Newton. Both end at
+    the same root to the solver tolerance: the residual's round-off floor (3e-9 here) over the
+    trailing edge's small stiffness (about 0.05) leaves the edges uncertain by about 1e-7."""
+    plain, predicted = _both(WAVY)
+    _assert_same_equilibrium(plain, predicted, edges_to=1e-6)
+
+
+@pytest.mark.slow
+def test_the_predicted_path_reaches_the_rough_equilibrium_of_the_plain_one():
+    """A 12-scale self-affine profile, adhesive (γ̃ = 2.387e-7, Broyden, p̃∞ = 0.2, ζ = 0.1):
+    contacts are born and merge on the way into one; the same contact and area to 1e-8 (the
+    plain path: 726 evaluations, the predicted one: 246)."""
+    problem = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
+                             rheology=SLS, solver=Broyden(),
+                             adhesion=EnergyBalance(gamma=2.387e-7), mean_pressure=0.2, zeta=0.1,
+                             discretization=Discretization(elements=32))
+    plain, predicted = _both(problem)
+    _assert_same_equilibrium(plain, predicted, edges_to=1e-8)
+
+
+def test_the_tangent_predicts_a_small_step_to_second_order():
+    """From a converged state the tangent ``-J⁻¹ ∂r/∂Δ̃`` predicts the equilibrium a step away
+    with an error that falls like the step squared (measured: 6.3e-5, 1.6e-5, 3.9e-6 for steps
+    of 8e-3, 4e-3, 2e-3, while the edges move by 1e-2 to 3e-3). The equilibria a step away
+    keep the state's zones (no polish), so that only the step separates them."""
+    solve = Solve(WAVY, WAVY.prepare())
+    eq = solve.equilibrium
+    state = eq.solve(np.array([-0.8, 0.6]), Control.penetration_of(0.4))
+    assert state.outcome is Outcome.CONVERGED
+    errors = []
+    for step in (8e-3, 4e-3, 2e-3):
+        target = eq.solve(state.edges, Control.penetration_of(0.4 + step), polish=False)
+        moved = np.max(np.abs(target.edges - state.edges))
+        errors.append(np.max(np.abs(solve.path.predicted(state, step) - target.edges)))
+        assert errors[-1] < 0.01 * moved
+    assert errors[0] / errors[1] == pytest.approx(4.0, rel=0.1)
+    assert errors[1] / errors[2] == pytest.approx(4.0, rel=0.1)
+
+
+def test_a_contact_born_adhesive_grows_until_its_edges_hold():
+    """A contact born as the check grid's narrow negative-gap region is far below its
+    equilibrium: both its edges want to grow. The growth stops where neither does any more
+    (or it merges), one residual evaluation per doubling step."""
+    solve = Solve(WAVY, WAVY.prepare())
+    eq = solve.equilibrium
+    control = Control.penetration_of(0.3)
+    born = (-0.01, 0.01)
+    before = solve.log.evaluations
+    grown = eq.grow(np.array(born), control, [born])
+    assert grown[0] < born[0] and grown[1] > born[1]
+    r = eq.residual_at(grown, control)
+    assert np.all(r >= 0)
+    assert solve.log.evaluations - before <= 12
+    final = eq.solve(grown, control)
+    assert final.outcome is Outcome.CONVERGED
+    assert final.edges[0] > grown[0] and final.edges[1] < grown[1]   # within the overshoot

@@ -1,0 +1,299 @@
+r"""Derivatives of the fixed-edge field solution with respect to the edges and the penetration.
+
+For fixed edges ``x`` the stresses solve ``B(x) σ = w(x) = r̃(ξ) - 1 + Δ̃`` (eq. 4.31). Every
+contact's mesh is attached to its two edges: its nodes are ``c + g(α)`` with centre ``c``,
+half-width ``α`` and the node pattern ``g`` of eq. 4.22 with the solve's fixed edge zones, so each
+node moves with ``∂z/∂X_{2j-1} = (1 - g'(α))/2`` and ``∂z/∂X_{2j} = (1 + g'(α))/2`` (``g'``
+by a central difference of the pattern: no kernel evaluation). The influence coefficient
+``B[p, q] = F(ξ_p - a_q) - F(ξ_p - b_q) + c0 (b_q - a_q)`` (eq. 4.32) then changes by
+
+.. math:: \dot B[p, q] = G(ξ_p - a_q)(\dot ξ_p - \dot a_q) - G(ξ_p - b_q)(\dot ξ_p - \dot b_q),
+
+``G = F' + c0`` the kernel (the slopes of the tabulated antiderivative, so that the derivative
+is that of the computed ``B``). Hence ``σ̇ = B⁻¹(ẇ - Ḃσ)`` with the factorisation already at
+hand, and any quantity ``ψᵀσ`` changes by ``μᵀ(ẇ - Ḃσ)`` with ``Bᵀμ = ψ`` (one adjoint solve
+per quantity, whatever the number of edges). ``Ḃσ`` needs ``G`` at the collocation points
+minus the nodes, the points of the influence matrix itself: a Jacobian costs about one residual.
+
+Directions: the ``2 N_c`` edges (order ``X_1, X_2, ...``) at fixed penetration, then the
+penetration ``Δ̃`` at fixed edges (last column). Load control follows from the mean pressure's
+derivatives (:meth:`FieldSensitivity.pressure`).
+
+The energy terms of the finite-δX balance (eqs. 4.12-4.14, the bordered enlarged mesh of
+:meth:`~viscocontact.contact.edges.EdgeContext.border`) are differentiated the same way:
+the enlarged field by an adjoint solve of the bordered system through its Schur complement, the
+antisymmetric matrix of ``δL̃_P`` with the slopes of the non-reciprocal part of the kernel.
+"""
+from __future__ import annotations
+
+import functools
+
+import attrs
+import numpy as np
+from scipy.linalg import lu_solve
+
+from .edges import sif_calibration
+from .fields import _POWERS, N_FIT, _avg_power
+from .mesh import contact_spec, element_counts, graded_nodes
+
+#: Relative step of the central difference of a contact's node pattern in its half-width.
+NODE_STEP = 1e-6
+
+
+def contact_nodes(a: float, b: float, spec, zone) -> np.ndarray:
+    """Nodes of the contact ``[a, b]`` exactly as :func:`~viscocontact.contact.mesh.build_mesh`
+    places them (``zone``: its fixed edge zone, ``None``: the default one)."""
+    z = 0.5 * (a + b) + graded_nodes(0.5 * (b - a), spec, zone)
+    z[0], z[-1] = a, b
+    return z
+
+
+def node_velocities(a: float, b: float, spec, zone) -> tuple[np.ndarray, np.ndarray]:
+    """``(∂z/∂a, ∂z/∂b)`` of the nodes of contact ``[a, b]`` (edge zones kept fixed)."""
+    alpha = 0.5 * (b - a)
+    eps = NODE_STEP * alpha
+    dg = (graded_nodes(alpha + eps, spec, zone) - graded_nodes(alpha - eps, spec, zone)) / (2 * eps)
+    dg[0], dg[-1] = -1.0, 1.0
+    return 0.5 * (1.0 - dg), 0.5 * (1.0 + dg)
+
+
+def _edge_weights(nodes: np.ndarray, spec) -> tuple[np.ndarray, np.ndarray]:
+    """Weights ``w`` with calibrated ``K̃ = w·σ`` on the first (last) fitted elements of one
+    contact, its left and its right edge; ``spec`` has the contact's element count. The same
+    arithmetic as :func:`~viscocontact.contact.fields.stress_intensity` with the calibration of
+    :meth:`~viscocontact.contact.edges.EdgeContext.stress_intensity`, up to the least-squares
+    solver."""
+    left, right = nodes[:-1], nodes[1:]
+    n_fit = min(N_FIT, max(3, len(left) // 2))
+    xl, xr = nodes[0], nodes[-1]
+
+    def first_row(ra, rb):
+        A = np.column_stack([_avg_power(ra[:n_fit], rb[:n_fit], p) for p in _POWERS])
+        return np.linalg.pinv(A)[0] * np.sqrt(2 * np.pi)
+
+    wl = first_row(left - xl, right - xl)
+    wr = first_row((xr - right)[::-1], (xr - left)[::-1])
+    half = 0.5 * (xr - xl)
+    first = right[0] - left[0]
+    ratio = sif_calibration(spec, np.array([half, half]), np.array([first, first]) / half)
+    return wl / ratio[0], wr / ratio[1]
+
+
+class FieldSensitivity:
+    """Derivatives of one fixed-edge field solution (see the module docstring).
+
+    Parameters
+    ----------
+    fields : FieldSolution
+    kernel : PreparedKernel
+    shape : NormalizedProfile
+    spec : MeshSpec
+    zones, counts
+        The fixed edge zones and element counts the mesh was built with.
+    """
+
+    def __init__(self, fields, kernel, shape, spec, zones=None, counts=None):
+        self.fields = fields
+        self.kernel = kernel
+        self.shape = shape
+        self.spec = spec
+        self.zones = zones
+        self.counts = counts
+        mesh = fields.mesh
+        nc = mesh.n_contacts
+        self.n_edges = 2 * nc
+        self.n_dirs = 2 * nc + 1
+        n_el = len(mesh.left)
+        nodes, vel, left_idx, right_idx = [], [], np.empty(n_el, np.intp), np.empty(n_el, np.intp)
+        k0 = 0
+        for j in range(nc):
+            sl = mesh.slice(j)
+            z = np.append(mesh.left[sl], mesh.right[sl][-1])
+            da, db = node_velocities(mesh.edges[2 * j], mesh.edges[2 * j + 1],
+                                     contact_spec(spec, counts, j),
+                                     None if zones is None else zones[j])
+            v = np.zeros((len(z), self.n_dirs))
+            v[:, 2 * j], v[:, 2 * j + 1] = da, db
+            nodes.append(z)
+            vel.append(v)
+            m = sl.stop - sl.start
+            left_idx[sl] = k0 + np.arange(m)
+            right_idx[sl] = k0 + np.arange(1, m + 1)
+            k0 += m + 1
+        #: node positions and velocities (K, D); element q runs from node left_idx[q] to
+        #: node right_idx[q]
+        self.nodes = np.concatenate(nodes)
+        self.node_vel = np.concatenate(vel)
+        self.left_idx, self.right_idx = left_idx, right_idx
+        self.colloc_vel = 0.5 * (self.node_vel[left_idx] + self.node_vel[right_idx])
+        self.width_vel = self.node_vel[right_idx] - self.node_vel[left_idx]
+        w_vel = self.shape.slopes(mesh.mid)[:, None] * self.colloc_vel
+        w_vel[:, -1] = 1.0
+        #: ẇ: the right-hand side's change in every direction (N, D)
+        self.w_vel = w_vel
+
+    # ---- building blocks ----------------------------------------------------------------
+    def node_weights(self, u: np.ndarray, left_idx=None, right_idx=None, size=None) -> np.ndarray:
+        """``s_k = Σ_q u_q ([a_q = z_k] - [b_q = z_k])`` over the nodes (``u``: (N,) or (N, M))."""
+        li = self.left_idx if left_idx is None else left_idx
+        ri = self.right_idx if right_idx is None else right_idx
+        size = len(self.nodes) if size is None else size
+        u = np.asarray(u, dtype=float)
+        out = np.zeros((size,) + u.shape[1:])
+        np.add.at(out, li, u)
+        np.subtract.at(out, ri, u)
+        return out
+
+    @functools.cached_property
+    def slopes(self):
+        """``(G, E')`` at the base collocation points minus the base nodes (E' None for a
+        reciprocal kernel): ``G = F' + c0``, ``E'`` the non-reciprocal part."""
+        x = self.fields.mesh.mid[:, None] - self.nodes[None, :]
+        return self._slopes(x)
+
+    def _slopes(self, x):
+        k = self.kernel
+        if self.dissipative:
+            g, e = k.slope_pair(x)
+            return g + k.mean, e
+        return k.antiderivative_slope(x) + k.mean, None
+
+    @property
+    def dissipative(self) -> bool:
+        return len(self.kernel.weights) > 0 or self.kernel.correction is not None
+
+    @functools.cached_property
+    def rhs(self) -> np.ndarray:
+        """``f = ẇ - Ḃσ`` (N, D): ``σ̇ = B⁻¹ f`` at fixed edges and penetration otherwise."""
+        G = self.slopes[0]
+        s = self.node_weights(self.fields.sigma)
+        b_sigma = self.colloc_vel * (G @ s)[:, None] - G @ (self.node_vel * s[:, None])
+        return self.w_vel - b_sigma
+
+    def adjoint(self, psi: np.ndarray) -> np.ndarray:
+        """``μ = B⁻ᵀ ψ`` (``ψ``: (N,) or (N, M))."""
+        return lu_solve(self.fields.lu, psi, trans=1, check_finite=False)
+
+    def linear(self, psi: np.ndarray) -> np.ndarray:
+        """Derivatives ``d(ψᵀσ)/d(x, Δ̃)`` of the functionals ``ψ`` (N, M) at fixed ``ψ``:
+        (M, D)."""
+        return self.adjoint(psi).T @ self.rhs
+
+    def stresses(self) -> np.ndarray:
+        """``σ̇ = B⁻¹ f`` (N, D): forward mode, every direction."""
+        return lu_solve(self.fields.lu, self.rhs, check_finite=False)
+
+    def pressure(self) -> np.ndarray:
+        """``dp̃∞/d(x, Δ̃)`` (D,): ``p̃∞ = -(1/2π) Σ h σ``."""
+        mesh, sigma = self.fields.mesh, self.fields.sigma
+        d = self.linear(mesh.width[:, None])[0] + self.width_vel.T @ sigma
+        return -d / (2 * np.pi)
+
+    # ---- stress-intensity factors -----------------------------------------------------------
+    def stress_intensity(self) -> np.ndarray:
+        """``dK̃/d(x, Δ̃)`` (2 N_c, D) of the calibrated stress-intensity factors."""
+        mesh, sigma = self.fields.mesh, self.fields.sigma
+        nc = mesh.n_contacts
+        counts = element_counts(self.spec, self.counts, nc)
+        n = len(sigma)
+        W = np.zeros((n, 2 * nc))
+        explicit = np.zeros((2 * nc, self.n_dirs))
+        for j in range(nc):
+            sl = mesh.slice(j)
+            a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
+            spec_j = contact_spec(self.spec, self.counts, j)
+            zone = None if self.zones is None else self.zones[j]
+            cal = attrs.evolve(self.spec, elements=int(counts[j]))
+            z = np.append(mesh.left[sl], mesh.right[sl][-1])
+            wl, wr = _edge_weights(z, cal)
+            m = len(wl)
+            W[sl.start:sl.start + m, 2 * j] = wl
+            W[sl.stop - m:sl.stop, 2 * j + 1] = wr[::-1]
+            # the weights move with the mesh: a central difference in each edge (no kernel)
+            eps = NODE_STEP * 0.5 * (b - a)
+            for e, (da, db) in enumerate(((eps, 0.0), (0.0, eps))):
+                zp = contact_nodes(a + da, b + db, spec_j, zone)
+                zm = contact_nodes(a - da, b - db, spec_j, zone)
+                (lp, rp), (lm, rm) = (_edge_weights(zp, cal),
+                                      _edge_weights(zm, cal))
+                explicit[2 * j, 2 * j + e] = (lp - lm) @ sigma[sl][:m] / (2 * eps)
+                explicit[2 * j + 1, 2 * j + e] = (rp - rm) @ sigma[sl][::-1][:m] / (2 * eps)
+        return self.linear(W) + explicit
+
+    # ---- the finite-δX energy release --------------------------------------------------------
+    def energy_release(self, ctx, i: int, dx: float, ddx=None) -> np.ndarray | None:
+        """``d(δŨ/δX̃ + δL̃_P/δX̃)/d(x, Δ̃)`` (D,) of edge ``i`` advanced by ``dx`` on the bordered
+        mesh (``ddx``: the advance's own derivatives, (D,), when it depends on the edges).
+        None when the advance is not bordered (then the caller differences)."""
+        border = ctx.border(i, dx)
+        if border is None:
+            return None
+        f, mesh = self.fields, self.fields.mesh
+        D = self.n_dirs
+        ddx = np.zeros(D) if ddx is None else np.asarray(ddx, dtype=float)
+        sig, h, w = f.sigma, mesh.width, f.rhs0 + f.penetration
+        s_old, s_new, w_n = border.s_old, border.s_new, border.w_new
+        h_n = border.right - border.left
+        n = len(s_new)
+        # new nodes: translated with edge i, stretched with the advance
+        new_nodes = np.append(border.left, border.right[-1])
+        x_edge = mesh.edges[i]
+        phi = (new_nodes - (x_edge - dx if i % 2 == 0 else x_edge)) / dx
+        nv = np.outer(phi - (1.0 if i % 2 == 0 else 0.0), ddx)
+        nv[:, i] += 1.0
+        li_n, ri_n = np.arange(n), np.arange(1, n + 1)
+        xi_n = 0.5 * (border.left + border.right)
+        xv_n = 0.5 * (nv[li_n] + nv[ri_n])
+        hv_n = nv[ri_n] - nv[li_n]
+        wv_n = self.shape.slopes(xi_n)[:, None] * xv_n
+        wv_n[:, -1] = 1.0
+        G_bb, E_bb = self.slopes
+        G_bn, E_bn = self._slopes(mesh.mid[:, None] - new_nodes[None, :])
+        G_nb, E_nb = self._slopes(xi_n[:, None] - self.nodes[None, :])
+        G_nn, _ = self._slopes(xi_n[:, None] - new_nodes[None, :])
+        s_b = self.node_weights(s_old)                          # σₑ on the base nodes
+        s_n = self.node_weights(s_new, li_n, ri_n, n + 1)       # ... and on the new ones
+        s_sig = self.node_weights(sig)
+        # adjoint of the enlarged field: ψₑ = ∂(δU + δL_P)/∂σₑ
+        psi_b = -0.5 * h * w
+        psi_n = -0.5 * h_n * w_n
+        psi = 0.5 * h * w                                        # ∂/∂σ of the base field
+        explicit = (-0.5 * ((self.width_vel.T @ (s_old * w)) + (hv_n.T @ (s_new * w_n))
+                            + self.w_vel.T @ (h * s_old) + wv_n.T @ (h_n * s_new))
+                    + 0.5 * (self.width_vel.T @ (sig * w) + self.w_vel.T @ (h * sig)))
+        if self.dissipative and border.cols is not None:
+            cols, rows = border.cols, border.rows
+            a_sig, hsig_a = ctx._base_products()
+            A0 = ctx._antisymmetric_matrix()
+            hsig = h * sig
+            psi_b = psi_b - 0.25 * (hsig_a - h * a_sig)
+            psi_n = psi_n - 0.25 * (cols.T @ hsig - h_n * (rows @ sig))
+            a_e = A0 @ s_old + cols @ s_new                      # (Aₑσₑ) on the base rows
+            psi = psi - 0.25 * (h * a_e - (A0.T @ (h * s_old) + rows.T @ (h_n * s_new)))
+            # T1: ḣ on the base rows of (h̄σ̄)ᵀAₑσₑ
+            t1 = self.width_vel.T @ (sig * a_e)
+            # T2: (h̄σ̄)ᵀ Ȧₑ σₑ (base rows, all nodes)
+            e_s = E_bb @ s_b + E_bn @ s_n
+            t2 = (self.colloc_vel.T @ (hsig * e_s) - self.node_vel.T @ ((hsig @ E_bb) * s_b)
+                  - nv.T @ ((hsig @ E_bn) * s_n))
+            # T3: ḣₑ in (hₑσₑ)ᵀAₑσ̄
+            t3 = self.width_vel.T @ (s_old * a_sig) + hv_n.T @ (s_new * (rows @ sig))
+            # T4: (hₑσₑ)ᵀ Ȧₑ σ̄ (all rows, base nodes only: σ̄ vanishes on the new elements)
+            hs_old, hs_new = h * s_old, h_n * s_new
+            t4 = (self.colloc_vel.T @ (hs_old * (E_bb @ s_sig)) + xv_n.T @ (hs_new * (E_nb @ s_sig))
+                  - self.node_vel.T @ ((hs_old @ E_bb + hs_new @ E_nb) * s_sig))
+            explicit = explicit - 0.25 * (t1 + t2 - t3 - t4)
+        # λₑ = Bₑ⁻ᵀ ψₑ through the Schur complement: λ_n = S⁻ᵀ(ψ_n - Yᵀψ_b), λ_b = B⁻ᵀ(ψ_b - rᵀλ_n)
+        lam_n = lu_solve(border.schur, psi_n - border.Y.T @ psi_b, trans=1, check_finite=False)
+        lam_b = self.adjoint(psi_b - border.r.T @ lam_n)
+        # λₑᵀ(ẇₑ - Ḃₑσₑ)
+        g_b = G_bb @ s_b + G_bn @ s_n
+        g_n = G_nb @ s_b + G_nn @ s_n
+        lg_b = lam_b @ G_bb + lam_n @ G_nb
+        lg_n = lam_b @ G_bn + lam_n @ G_nn
+        b_e = (self.colloc_vel.T @ (lam_b * g_b) + xv_n.T @ (lam_n * g_n)
+               - self.node_vel.T @ (lg_b * s_b) - nv.T @ (lg_n * s_n))
+        enlarged = self.w_vel.T @ lam_b + wv_n.T @ lam_n - b_e
+        base = self.adjoint(psi) @ self.rhs
+        total = (border.d_u + border.d_lp) / dx
+        return (enlarged + base + explicit) / dx - total * ddx / dx
