@@ -43,10 +43,7 @@ class Auto(SolutionMethod):
         """The method a solve of ``problem`` takes, and why."""
         from .bem import BEM
 
-        try:
-            spectral = self.spectral()
-        except ImportError as exc:           # a partial install
-            return BEM(), f"the spectral method cannot be imported ({exc})"
+        spectral = self.spectral()
         reason = spectral.unsupported(problem)
         if reason is None:
             return spectral, ("adhesionless scene: the equilibrium does not depend on the path; "
