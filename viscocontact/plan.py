@@ -97,7 +97,6 @@ def solve_plan(problem, prepared) -> SolvePlan:
     if not method or method[0].stage != "method":
         method.insert(0, PlanStep(stage="method", choice=problem.method.name,
                                   reason="as asked (the scene's [method] or the problem's method)"))
-    method = [step for i, step in enumerate(method) if i == 0 or step.stage != "method"]
     if not any(step.stage == "fields" for step in method):
         method.append(PlanStep(stage="fields", choice="pressure, displacement and gap only when "
                                "asked", reason="fields=True / --fields"))

@@ -79,5 +79,6 @@ class Auto(SolutionMethod):
         from ..plan import PlanStep
 
         method, reason = self.choose(problem)
-        return (PlanStep(stage="method", choice=method.name, reason=reason),
-                *method.plan_steps(problem, prepared))
+        # the choice and its reason stand for the chosen method's own "method" step
+        inner = [step for step in method.plan_steps(problem, prepared) if step.stage != "method"]
+        return (PlanStep(stage="method", choice=method.name, reason=reason), *inner)
