@@ -66,12 +66,18 @@ def test_observed_order_of_a_second_order_sequence():
     assert order == pytest.approx(2.0) and pairs == pytest.approx([2.0, 2.0])
 
 
-def test_time_limit_stops_a_long_block():
+def test_time_limit_stops_a_solve_at_its_next_check():
     import time
 
-    with pytest.raises(validation.SolveTimeout):
-        with validation.time_limit(0.2):
-            time.sleep(5)
+    from viscocontact.deadline import check
+    from viscocontact.errors import TimeLimitExceeded
+
+    with pytest.raises(TimeLimitExceeded):
+        with validation.time_limit(0.05):
+            time.sleep(0.1)
+            check()         # where every solver checks: at each residual evaluation
+    with validation.time_limit(0):  # no limit
+        check()
 
 
 def test_cli_validate_refuses_zero_workers(capsys, tmp_path):

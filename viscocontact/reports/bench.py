@@ -40,7 +40,7 @@ from typing import Any
 import attrs
 import numpy as np
 
-from ..errors import ValidationError
+from ..errors import TimeLimitExceeded, ValidationError
 
 BETA = 10.0
 PEER_FILE = "peer_fft.py"
@@ -111,15 +111,12 @@ FULL = Plan(cases=tuple(c.name for c in CASES), solvers=SOLVER_NAMES,
 
 
 # ---- running one solve under a time budget ----------------------------------------------------
-class BudgetExceeded(BaseException):
-    """A solve ran past its time budget (BaseException: no solver swallows it)."""
-
-
 def time_limit(seconds):
-    """Raise :class:`BudgetExceeded` after ``seconds`` of wall time (main thread only)."""
-    from .._alarm import time_limit as limit
+    """The cooperative :func:`~viscocontact.deadline.deadline` of ``seconds``: a solve past it
+    raises :class:`~viscocontact.errors.TimeLimitExceeded` at its next residual evaluation."""
+    from ..deadline import deadline
 
-    return limit(seconds, lambda: BudgetExceeded(f"over the {seconds:g} s budget"))
+    return deadline(seconds or None)
 
 
 def _solver(name: str):
@@ -137,8 +134,9 @@ def _timed(fn, repeats: int, budget: float) -> dict:
         try:
             with time_limit(budget):
                 out = fn()
-        except BudgetExceeded as exc:
-            return {"status": "timeout", "seconds": time.perf_counter() - started, "note": str(exc)}
+        except TimeLimitExceeded:
+            return {"status": "timeout", "seconds": time.perf_counter() - started,
+                    "note": f"over the {budget:g} s budget"}
         except Exception as exc:  # a solver error is a benchmark outcome, not a crash
             return {"status": "error", "seconds": time.perf_counter() - started,
                     "note": " ".join(f"{type(exc).__name__}: {exc}".split())[:120]}

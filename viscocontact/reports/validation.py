@@ -96,19 +96,13 @@ QUICK = Plan(
 # ---------------------------------------------------------------------------------------------
 # Tasks (top level, so that a process pool can run them); each returns plain dictionaries
 # ---------------------------------------------------------------------------------------------
-class SolveTimeout(BaseException):
-    """A solve ran past the plan's time limit (a BaseException, so no solver swallows it)."""
-
-
 def time_limit(seconds):
-    """Raise :class:`SolveTimeout` in the block after ``seconds`` of wall time.
+    """The cooperative :func:`~viscocontact.deadline.deadline` of ``seconds`` (0 or None: no
+    limit): a solve that runs past it raises :class:`~viscocontact.errors.TimeLimitExceeded`
+    at its next residual evaluation, in any thread or worker, and is reported as failed."""
+    from ..deadline import deadline
 
-    Uses ``SIGALRM``, so it only acts in the main thread of a process (the pool's workers and
-    the serial runner); elsewhere, or without a limit, the block runs unbounded.
-    """
-    from .._alarm import time_limit as limit
-
-    return limit(seconds, lambda: SolveTimeout(f"time limit of {seconds:.0f} s reached"))
+    return deadline(seconds or None)
 
 
 def _profile(seed):
@@ -141,7 +135,7 @@ def _guarded(problem, limit, initial=None):
     try:
         with time_limit(limit), single_blas_thread():
             result = problem.solve(initial=initial)
-    except (Exception, SolveTimeout) as error:
+    except Exception as error:    # TimeLimitExceeded included
         return None, _failure(error, started)
     return result, _row(result, started)
 
@@ -195,7 +189,7 @@ def _path(base, field, values, limit) -> list:
         problem = attrs.evolve(base, **{field: v})
         result, row = _guarded(problem, limit, initial=previous)
         retried = (previous is not None and not row["converged"]
-                   and not (row["error"] or "").startswith("SolveTimeout"))
+                   and not (row["error"] or "").startswith("TimeLimitExceeded"))
         if retried:
             spent = row["seconds"]
             result, row = _guarded(problem, limit)
