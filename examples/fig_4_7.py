@@ -11,8 +11,8 @@ bisection solver (``sweep_rough_<control>_none.h5``).
 
 Small default: rough profile one seed, p̃∞ = 0.3 and Δ̃ = 0.5, ζ = 1e3, 1, 0.1, 1e-2, 1e-5 (swept
 downwards, each point from its neighbour), 32 elements per contact; sinusoid 9 ζ from 1e-5 to 1e3,
-64 elements. Measured on a loaded 2-core machine: wavy 111 s, rough 736 s (a single adhesive
-rough point can take many minutes, and studies have no per-point time limit). ``--full``: 20
+64 elements. Measured on a loaded 2-core machine (2026-11-24): wavy 29 s, rough 95 s (a single
+adhesive rough point can take minutes, and studies have no per-point time limit). ``--full``: 20
 realizations, 30 ζ from 1e-6 to 1e4, p̃∞ = 0.1, 0.3, 0.6 and Δ̃ = 0.25, 0.5, 1 (the thesis's size;
 days on one core). The thesis does not state the loads of
 its Fig. 4.7; these are our choice.
