@@ -317,10 +317,10 @@ def _configure_sweep(parser: argparse.ArgumentParser) -> None:
                              "with its adhesionless twin)")
     parser.add_argument("--no-continuation", dest="continuation", action="store_false",
                         help="solve every point from first touch instead of from its neighbour")
-    parser.add_argument("--zeta-step", metavar="DECADES", default="0.25",
-                        help="largest continuation step in decades of ζ (intermediate "
-                             "equilibria are solved, not stored), or 'none' for one step "
-                             "between neighbours (default 0.25)")
+    parser.add_argument("--zeta-step", metavar="DECADES", default="none",
+                        help="largest adhesive continuation step in decades of ζ "
+                             "(intermediate equilibria are solved, not stored); default "
+                             "'none': one step between neighbours")
     _add_study_options(parser, "sweep")
 
 

@@ -6,13 +6,13 @@ adhesionless side by side, and for every profile seed (realizations, averaged by
 :mod:`~viscocontact.studies.realizations`).
 
 Along ζ each point is continued from its neighbour (``continuation=True``): the contact set of the
-previous converged point is carried to the next ζ in steps of at most ``zeta_step`` decades
-(intermediate equilibria that are solved but not recorded), which follows one equilibrium branch
-the way a slowly decelerated (or accelerated) experiment would and is several times cheaper than
-starting from first touch. An adhesive rough contact has many equilibria at one ζ; a single jump
-over decades of ζ lands on one that depends on the solver's path, while bounded steps give the
-same branch whatever ζ grid the sweep asks for (``docs/figures.md``, "Which equilibrium").
-Adhesionless equilibria are unique: their points take one step.
+previous converged point is the initial guess of the next, which is several times cheaper than
+starting from first touch. An adhesionless equilibrium is unique, so its value does not depend on
+the start. An adhesive rough contact has many equilibria at one ζ and load, and which one a
+continued point lands on depends on the history: a slow change of speed (``zeta_step``: the gap
+to the next ζ crossed through unrecorded intermediate equilibria), an approach at that speed
+(``continuation=False``) and a single jump over decades of ζ (the default) can give different
+ones (``docs/figures.md``, "Which equilibrium").
 The first point of a chain, a point after a full-contact neighbour (full contact has no edges to
 carry) and every point of a sweep with ``continuation=False`` follow the approach path from first
 touch instead. A chain (one variant, load and seed) is sequential; different chains are
@@ -36,9 +36,6 @@ from .point import PointSpec, has_contact
 __all__ = ["Sweep", "log_zetas", "zeta_path"]
 
 CONTROLS = ("mean_pressure", "penetration")
-#: Default largest continuation step in decades of ζ: on the thesis's rough adhesive profile,
-#: paths with 4 and 8 steps per decade reach the same equilibria (``docs/figures.md``).
-DEFAULT_ZETA_STEP = 0.25
 ADHESIVE, ADHESIONLESS = "adhesive", "adhesionless"
 
 
@@ -118,11 +115,11 @@ class Sweep(Study):
     continuation : bool
         Continue each point from its neighbour along ζ (else every point from first touch).
     zeta_step : float or None
-        Largest step of a continuation in decades of ζ, in ``(0, 10]`` (default 0.25): a larger
-        gap between two ζ of the list (or to a ζ after a failed point) is crossed through
-        intermediate equilibria, log-spaced, that are not recorded. ``None``: one step, whatever
-        its size (the behaviour of study files written without this parameter). Adhesionless
-        points and ζ = 0 always take one step.
+        Largest step of an adhesive continuation in decades of ζ, in ``(0, 10]``: a larger gap
+        between two ζ of the list (or to a ζ after a failed point) is crossed through
+        log-spaced intermediate equilibria that are solved but not recorded, the way a slow
+        change of speed crosses it. ``None`` (default): one step, whatever its size.
+        Adhesionless points and ζ = 0 always take one step.
     fields : bool
         Store pressure, displacement and gap of every point.
     discretization : Discretization or dict, optional
@@ -162,7 +159,7 @@ class Sweep(Study):
     seeds: tuple | None = attrs.field(default=None, converter=_seeds)
     pair: bool = attrs.field(default=True, converter=bool)
     continuation: bool = attrs.field(default=True, converter=bool)
-    zeta_step: float | None = attrs.field(default=DEFAULT_ZETA_STEP, converter=_zeta_step)
+    zeta_step: float | None = attrs.field(default=None, converter=_zeta_step)
     fields: bool = attrs.field(default=False, converter=bool)
     discretization: Discretization | None = attrs.field(default=None, converter=_discretization)
 
@@ -193,8 +190,7 @@ class Sweep(Study):
 
     @classmethod
     def from_params(cls, scene, params: Mapping[str, Any]) -> "Sweep":
-        # a file written without "zeta_step" took one step between neighbours
-        return cls(scene=scene, **{"zeta_step": None, **params})
+        return cls(scene=scene, **params)     # files written before zeta_step: one step
 
     def _layout(self):
         """``(variant, load, seed, zetas, (iv, il, iseed, iz0))`` of every chain, in order."""
