@@ -317,6 +317,10 @@ def _configure_sweep(parser: argparse.ArgumentParser) -> None:
                              "with its adhesionless twin)")
     parser.add_argument("--no-continuation", dest="continuation", action="store_false",
                         help="solve every point from first touch instead of from its neighbour")
+    parser.add_argument("--zeta-step", metavar="DECADES", default="none",
+                        help="largest adhesive continuation step in decades of ζ "
+                             "(intermediate equilibria are solved, not stored); default "
+                             "'none': one step between neighbours")
     _add_study_options(parser, "sweep")
 
 
@@ -336,8 +340,17 @@ def _run_sweep(args: argparse.Namespace) -> int:
             if args.loads is None and args.control != scene.load.controlled:
                 raise ValidationError("--loads", None, f"values of {args.control} (the scene "
                                                        f"is in {scene.load.controlled} control)")
+        if args.zeta_step.strip().lower() == "none":
+            step = None
+        else:
+            try:
+                step = float(args.zeta_step)
+            except ValueError:
+                raise ValidationError("--zeta-step", args.zeta_step,
+                                      "decades of ζ in (0, 10], or 'none'") from None
         return Sweep(scene=scene, zetas=parse_numbers("--zetas", args.zetas, log=True),
                      seeds=_seeds(args), pair=args.pair, continuation=args.continuation,
+                     zeta_step=step,
                      fields=args.fields, discretization=_discretization(args), **options)
 
     return _run_study_file(args, "sweep", build)

@@ -127,3 +127,11 @@ def test_dask_cluster_gives_the_serial_result(tmp_path, scene, serial):
     a, b = load_study(serial), load_study(remote)
     assert len(a) == len(b) == 4
     identical(a.points, b.points)
+
+
+def test_bad_zeta_step(tmp_path, scene, capsys):
+    for bad, field in (("fast", "--zeta-step"), ("0", "sweep.zeta_step"), ("12", "sweep.zeta_step")):
+        assert main(["sweep", str(scene), "--zetas", "1,0.01", "--zeta-step", bad,
+                     "--out", str(tmp_path / "x.h5")]) == 2
+        err = capsys.readouterr().err
+        assert field in err and "(0, 10]" in err and "Traceback" not in err

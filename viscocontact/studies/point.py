@@ -77,6 +77,10 @@ class PointSpec:
         Keyword arguments of :class:`~viscocontact.problem.Discretization` (default mesh if None).
     labels : dict
         The chain's labels copied into the record (``variant``, ``seed``, ``gamma``, ``load``).
+    path : tuple of float
+        ζ of intermediate equilibria to pass through, in order, before the point's own ζ (a
+        continuation in bounded steps; they are solved, not recorded). A converged one hands its
+        contact set on; one that does not converge is passed over.
     """
 
     chain: int
@@ -86,6 +90,7 @@ class PointSpec:
     fields: bool = False
     discretization: Mapping[str, Any] | None = None
     labels: Mapping[str, Any] = attrs.field(factory=dict)
+    path: tuple = attrs.field(default=(), converter=tuple)
 
 
 def solve_point(scene: Mapping[str, Any], spec: PointSpec,
@@ -163,9 +168,16 @@ def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
     options = {}
     if spec.discretization:
         options["discretization"] = Discretization(**spec.discretization)
+    start = None if initial is None else np.asarray(initial, dtype=float).reshape(-1)
+    for zeta in spec.path:      # intermediate equilibria of a bounded continuation
+        at = {**scene, "sliding": {"zeta": float(zeta)}}
+        problem = ContactProblem.from_scene(Scene.from_dict(at), **options)
+        result = problem.solve(initial=start, prepared=_prepared(at, problem))
+        if result.converged:
+            # full contact has no edges to carry: the next step follows the approach path
+            start = None if result.full_contact else np.asarray(result.edges, float).reshape(-1)
     problem = ContactProblem.from_scene(Scene.from_dict(scene), **options)
     prepared = _prepared(scene, problem)
-    start = None if initial is None else np.asarray(initial, dtype=float).reshape(-1)
     return problem.solve(initial=start, fields=spec.fields, prepared=prepared)
 
 

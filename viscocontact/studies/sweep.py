@@ -5,9 +5,14 @@ load of a list (all in load control, p̃∞, or all in penetration control, Δ̃
 adhesionless side by side, and for every profile seed (realizations, averaged by
 :mod:`~viscocontact.studies.realizations`).
 
-Along ζ each point is continued from its neighbour: the contact set of the previous converged
-point is the initial guess (``continuation=True``), which follows one equilibrium branch the way a
-slowly accelerated experiment would and is several times cheaper than starting from first touch.
+Along ζ each point is continued from its neighbour (``continuation=True``): the contact set of the
+previous converged point is the initial guess of the next, which is several times cheaper than
+starting from first touch. An adhesionless equilibrium is unique, so its value does not depend on
+the start. An adhesive rough contact has many equilibria at one ζ and load, and which one a
+continued point lands on depends on the history: a slow change of speed (``zeta_step``: the gap
+to the next ζ crossed through unrecorded intermediate equilibria), an approach at that speed
+(``continuation=False``) and a single jump over decades of ζ (the default) can give different
+ones (``docs/figures.md``, "Which equilibrium").
 The first point of a chain, a point after a full-contact neighbour (full contact has no edges to
 carry) and every point of a sweep with ``continuation=False`` follow the approach path from first
 touch instead. A chain (one variant, load and seed) is sequential; different chains are
@@ -15,9 +20,11 @@ independent and run in parallel (``workers``, ``scheduler`` of :func:`~viscocont
 """
 from __future__ import annotations
 
+import math
 from typing import Any, ClassVar, Mapping, Sequence
 
 import attrs
+import numpy as np
 
 from ..errors import ValidationError
 from ..problem import Discretization
@@ -26,10 +33,38 @@ from .base import (Chain, Study, adhesion_gamma, check_scene, int_list, log_zeta
                    scene_variant, secant_start, starting_point)
 from .point import PointSpec, has_contact
 
-__all__ = ["Sweep", "log_zetas"]
+__all__ = ["Sweep", "log_zetas", "zeta_path"]
 
 CONTROLS = ("mean_pressure", "penetration")
 ADHESIVE, ADHESIONLESS = "adhesive", "adhesionless"
+
+
+def _zeta_step(value) -> float | None:
+    if value is None:
+        return None
+    if (isinstance(value, bool) or not isinstance(value, (int, float))
+            or not 0 < float(value) <= 10):
+        raise ValidationError("sweep.zeta_step", value,
+                              "decades of ζ in (0, 10], or None for one step")
+    return float(value)
+
+
+def zeta_path(start: float, end: float, step: float | None) -> tuple[float, ...]:
+    """The intermediate ζ of a continuation from ``start`` to ``end`` (both excluded), log-spaced,
+    so that no step exceeds ``step`` decades; empty for ``step=None``, a ζ of 0 or a short gap.
+
+    >>> [round(z, 6) for z in zeta_path(1.0, 1e-2, 0.5)]
+    [0.316228, 0.1, 0.031623]
+    >>> zeta_path(1.0, 0.0, 0.25), zeta_path(1.0, 0.6, 0.25)
+    ((), ())
+    """
+    if step is None or start <= 0 or end <= 0:
+        return ()
+    decades = abs(math.log10(end) - math.log10(start))
+    n = math.ceil(decades / step - 1e-9)
+    if n <= 1:
+        return ()
+    return tuple(float(z) for z in np.logspace(math.log10(start), math.log10(end), n + 1)[1:-1])
 
 
 def _zetas(value) -> tuple:
@@ -79,6 +114,12 @@ class Sweep(Study):
         solver and mesh), side by side as in the thesis's figures.
     continuation : bool
         Continue each point from its neighbour along ζ (else every point from first touch).
+    zeta_step : float or None
+        Largest step of an adhesive continuation in decades of ζ, in ``(0, 10]``: a larger gap
+        between two ζ of the list (or to a ζ after a failed point) is crossed through
+        log-spaced intermediate equilibria that are solved but not recorded, the way a slow
+        change of speed crosses it. ``None`` (default): one step, whatever its size.
+        Adhesionless points and ζ = 0 always take one step.
     fields : bool
         Store pressure, displacement and gap of every point.
     discretization : Discretization or dict, optional
@@ -118,6 +159,7 @@ class Sweep(Study):
     seeds: tuple | None = attrs.field(default=None, converter=_seeds)
     pair: bool = attrs.field(default=True, converter=bool)
     continuation: bool = attrs.field(default=True, converter=bool)
+    zeta_step: float | None = attrs.field(default=None, converter=_zeta_step)
     fields: bool = attrs.field(default=False, converter=bool)
     discretization: Discretization | None = attrs.field(default=None, converter=_discretization)
 
@@ -142,12 +184,13 @@ class Sweep(Study):
         return {"zetas": list(self.zetas), "loads": list(self.loads), "control": self.control,
                 "seeds": None if self.seeds is None else list(self.seeds), "pair": self.pair,
                 "continuation": self.continuation, "fields": self.fields,
+                **({} if self.zeta_step is None else {"zeta_step": self.zeta_step}),
                 "discretization": (None if self.discretization is None
                                    else attrs.asdict(self.discretization))}
 
     @classmethod
     def from_params(cls, scene, params: Mapping[str, Any]) -> "Sweep":
-        return cls(scene=scene, **params)
+        return cls(scene=scene, **params)     # files written before zeta_step: one step
 
     def _layout(self):
         """``(variant, load, seed, zetas, (iv, il, iseed, iz0))`` of every chain, in order."""
@@ -192,10 +235,15 @@ class Sweep(Study):
             anchor = next((r for r in reversed(records) if has_contact(r)), None)
         target = chain.labels["load"] if self.control == "penetration" else None
         started_from, initial = starting_point(anchor, target)
+        path: tuple[float, ...] = ()
         if self.continuation and initial is not None and initial.size:
-            predicted = secant_start(records, "zeta", chain.zetas[k], log=True)
+            if chain.labels["variant"] == ADHESIVE and anchor is not None:
+                path = zeta_path(float(anchor["zeta"]), chain.zetas[k], self.zeta_step)
+            predicted = secant_start(records, "zeta", path[0] if path else chain.zetas[k],
+                                     log=True)
             initial = initial if predicted is None else predicted
         spec = PointSpec(chain=chain.index, step=k, phase="sweep", started_from=started_from,
+                         path=path,
                          fields=self.fields, labels=dict(chain.labels),
                          discretization=(None if self.discretization is None
                                          else attrs.asdict(self.discretization)))

@@ -138,3 +138,60 @@ def test_bad_time_limit(tmp_path, adhesionless, limit):
         run(Sweep(scene=adhesionless, zetas=[1.0]), tmp_path / "s.h5", progress=None,
             time_limit=limit)
     assert info.value.field == "time_limit"
+
+
+@pytest.mark.parametrize("step", [0, -0.5, 10.5, float("nan"), "0.25", True])
+def test_bad_zeta_step(adhesive, step):
+    with pytest.raises(ValidationError) as info:
+        Sweep(scene=adhesive, zetas=[1.0], zeta_step=step)
+    assert info.value.field == "sweep.zeta_step"
+
+
+def test_zeta_path_bounds_every_step():
+    from viscocontact.studies.sweep import zeta_path
+
+    path = zeta_path(1e3, 1e-5, 0.25)
+    steps = np.abs(np.diff(np.log10([1e3, *path, 1e-5])))
+    assert len(path) == 31 and np.allclose(steps, 0.25)
+    path = zeta_path(0.02, 3.0, 0.3)                # upwards, not a whole number of steps
+    steps = np.diff(np.log10([0.02, *path, 3.0]))
+    assert np.all(steps > 0) and steps.max() <= 0.3 and np.allclose(steps, steps[0])
+    assert zeta_path(1.0, 10 ** -0.25, 0.25) == ()  # exactly one step
+    assert zeta_path(1.0, 1e-3, None) == () and zeta_path(0.0, 1.0, 0.25) == ()
+
+
+def test_zeta_step_is_written_only_when_set(adhesive):
+    """Study files written before the parameter existed read as one step (its default)."""
+    one = Sweep(scene=adhesive, zetas=[1.0, 1e-2])
+    assert one.zeta_step is None and "zeta_step" not in one.params()
+    assert Sweep.from_params(adhesive, one.params()) == one
+    bounded = Sweep(scene=adhesive, zetas=[1.0, 1e-2], zeta_step=0.25)
+    assert bounded.params()["zeta_step"] == 0.25
+    assert Sweep.from_params(adhesive, bounded.params()) == bounded
+
+
+def test_a_wide_gap_is_crossed_through_intermediate_equilibria(tmp_path, adhesive, mesh):
+    """The adhesive point at ζ = 1e-2 after ζ = 1 is the solve of a hand-written continuation
+    through ζ = 10^-0.5, 0.1, 10^-1.5 (not stored); the adhesionless twin takes one step."""
+    data = run(Sweep(scene=adhesive, zetas=[1.0, 1e-2], zeta_step=0.5, discretization=mesh),
+               tmp_path / "s.h5", progress=None)
+    assert data.complete and len(data) == 4
+    points = {(v, float(z)): i for i, (v, z) in
+              enumerate(zip(data.points["variant"], data.points["zeta"]))}
+    for variant, scene, path in (("adhesive", adhesive, [10 ** -0.5, 0.1, 10 ** -1.5]),
+                                 ("adhesionless", None, [])):
+        if scene is None:
+            data_dict = adhesive.to_dict()
+            data_dict["adhesion"] = {"kind": "none"}
+            scene = Scene.from_dict(data_dict)
+        previous = None
+        with single_blas_thread():
+            for zeta in [1.0, *path, 1e-2]:
+                problem = ContactProblem.from_scene(attrs.evolve(scene, zeta=zeta),
+                                                    discretization=Discretization(**mesh))
+                result = problem.solve(initial=previous)
+                previous = result if result.converged else previous
+        row = points[variant, 1e-2]
+        assert data.points["converged"][row]
+        assert data.points["area"][row] == pytest.approx(result.area, rel=1e-12, abs=0)
+        assert np.allclose(data.points["edges"][row], result.edges.ravel(), rtol=0, atol=1e-12)
