@@ -3,7 +3,8 @@
 import numpy as np
 import pytest
 
-from viscocontact import ContactProblem, Discretization, Elastic, Newton, Sinusoid
+from viscocontact import (ContactProblem, Discretization, Elastic, Newton, Sinusoid,
+                          StandardLinearSolid)
 from viscocontact.adhesion import MaugisDugdale
 from viscocontact.reference.johnson import JohnsonWavy
 from viscocontact.reference.maugis_dugdale import MaugisDugdaleWavy
@@ -77,3 +78,17 @@ def test_zones_that_meet_fail_with_the_reason():
                        mean_pressure=0.3, solver=Newton()).solve()
     assert not r.converged
     assert "Maugis-Dugdale zones" in r.message
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("zeta, beta_ref", [(1e-6, 1.0), (1e6, 10.0)])
+def test_viscoelastic_limits_are_the_elastic_solutions(zeta, beta_ref):
+    """Standard linear solid (β = 10): ζ → 0 is the relaxed elastic solution, ζ → ∞ the
+    instantaneous one (modulus ratio 10); measured -1.8e-5 and -4.4e-5 in Ã."""
+    ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=5.0)
+    model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
+    r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
+                       adhesion=model, mean_pressure=0.05, zeta=zeta, solver=Newton()).solve()
+    exact = MaugisDugdaleWavy(Gamma=GAMMA, h0=ref.h0, modulus_ratio=beta_ref)
+    assert r.converged, r.message
+    assert abs(r.area / exact.state_at_pressure(0.05).area - 1) < 1e-3
