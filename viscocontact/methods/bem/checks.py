@@ -55,9 +55,10 @@ class Checks:
         w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
         return xs, u - w
 
-    def births(self, fields):
-        """Regions ``(a, b, depth)`` outside the contacts where the profile penetrates."""
-        xs, gap = self.gap_outside(fields)
+    def births(self, fields, outside=None):
+        """Regions ``(a, b, depth)`` outside the contacts where the profile penetrates
+        (``outside``: :meth:`gap_outside` of ``fields`` when at hand)."""
+        xs, gap = self.gap_outside(fields) if outside is None else outside
         return negative_regions(xs, gap, 1e-9)
 
     def births_without_contact(self, control: Control):

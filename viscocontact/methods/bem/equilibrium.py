@@ -185,10 +185,11 @@ class Equilibrium:
                 return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
                              residual=size, message=message)
 
-            violation = self.adhesion.gap_violation(*self.checks.gap_outside(fields), fields)
+            xs, gap = self.checks.gap_outside(fields)          # once, for both checks
+            violation = self.adhesion.gap_violation(xs, gap, fields)
             if violation is not None:
                 return not_converged(violation)
-            regions = self.checks.births(fields)
+            regions = self.checks.births(fields, (xs, gap))
             if regions and any(len(x) == len(y) and np.allclose(x, y, rtol=0, atol=1e-7)
                                for y in converged_before_births):
                 # the same equilibrium again: the contacts born from it last time vanished
