@@ -22,7 +22,7 @@ scipy, matplotlib nor h5py:
 * components: profiles :class:`Sinusoid`, :class:`SelfAffineProfile`, :class:`MeasuredProfile`;
   rheologies :class:`Elastic`, :class:`StandardLinearSolid`, :class:`PronySeries`; kernels
   :class:`HalfPlane`, :class:`ConfinedLayer`, :class:`FreeLayer`; adhesion :class:`NoAdhesion`,
-  :class:`EnergyBalance`; solvers :class:`Newton`, :class:`Broyden`, :class:`Bisection`,
+  :class:`EnergyBalance`, :class:`MaugisDugdale`; solvers :class:`Newton`, :class:`Broyden`, :class:`Bisection`,
   :class:`NonlinearCG`;
 * studies: :class:`Sweep`, :class:`Cycle`, :func:`run_study` and :func:`resume_study`
   (``viscocontact.studies.run`` and ``resume``), :func:`load_study`, :class:`StudyData`,
@@ -61,7 +61,7 @@ _EXPORTS: dict[str, tuple[str, str]] = {
     **{name: ("profiles", name) for name in ("Sinusoid", "SelfAffineProfile", "MeasuredProfile")},
     **{name: ("rheology", name) for name in ("Elastic", "StandardLinearSolid", "PronySeries")},
     **{name: ("kernels", name) for name in ("HalfPlane", "ConfinedLayer", "FreeLayer")},
-    **{name: ("adhesion", name) for name in ("NoAdhesion", "EnergyBalance")},
+    **{name: ("adhesion", name) for name in ("NoAdhesion", "EnergyBalance", "MaugisDugdale")},
     **{name: ("solvers", name) for name in ("Newton", "Broyden", "Bisection", "NonlinearCG")},
     **{name: ("studies", name) for name in ("Sweep", "Cycle", "StudyData", "load_study",
                                             "confidence_band", "log_zetas", "StudyFileError")},

@@ -1,6 +1,9 @@
-"""Edge closing conditions: ``NoAdhesion`` (bounded stress) and ``EnergyBalance`` (eqs. 4.9-4.20)."""
-from .base import AdhesionModel, EdgeTerms
+"""Edge closing conditions: ``NoAdhesion`` (bounded stress), ``EnergyBalance`` (eqs. 4.9-4.20)
+and ``MaugisDugdale`` (cohesive zones of finite range)."""
+from .base import AdhesionLimitation, AdhesionModel, EdgeTerms
 from .energy_balance import DEFAULT_EDGE_PERTURBATION, EnergyBalance
+from .maugis_dugdale import MaugisDugdale
 from .none import NoAdhesion
 
-__all__ = ["AdhesionModel", "EdgeTerms", "EnergyBalance", "NoAdhesion", "DEFAULT_EDGE_PERTURBATION"]
+__all__ = ["AdhesionLimitation", "AdhesionModel", "EdgeTerms", "EnergyBalance", "MaugisDugdale",
+           "NoAdhesion", "DEFAULT_EDGE_PERTURBATION"]

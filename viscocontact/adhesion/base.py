@@ -19,6 +19,17 @@ Contract for implementers
    the Jacobian for about the cost of one residual; the default (``None``) makes the orchestrator
    difference the residuals instead (two to ``n_edges`` extra evaluations per Jacobian).
 
+5. Optionally, :meth:`field_solution` computes the field of a contact mesh itself (the default is
+   :func:`~viscocontact.contact.fields.solve_fields`, contact stresses only). A finite-range model
+   adds its stresses outside the contacts there as
+   :class:`~viscocontact.contact.fields.KnownLoads` (cohesive zones, whose lengths it solves for),
+   reusing ``previous``, the field of the last evaluation of the same contact set, as a start. It
+   raises :class:`AdhesionLimitation` for a contact set it cannot handle; the orchestrator then
+   treats the point as invalid (a solver steps back) and reports the reason if the solve fails.
+6. Optionally, :meth:`gap_violation` returns a message when the gap outside the contacts (and
+   outside the model's own loads) breaks the model's assumptions at an equilibrium; the
+   orchestrator then reports the solve as not converged with that message.
+
 Every method receives an :class:`~viscocontact.contact.edges.EdgeContext`, which computes
 stress-intensity factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
 """
@@ -28,6 +39,12 @@ import abc
 
 import attrs
 import numpy as np
+
+from ..errors import ViscoContactError
+
+
+class AdhesionLimitation(ViscoContactError):
+    """A contact set that an adhesion model does not handle (contract item 5)."""
 
 
 @attrs.frozen(kw_only=True)
@@ -88,6 +105,19 @@ class AdhesionModel(abc.ABC):
         """``∂r_i/∂X_j`` at fixed penetration and ``∂r_i/∂Δ̃`` at fixed edges, shape
         ``(n_edges, n_edges + 1)`` (the penetration last), or None when the model does not
         provide them (contract item 4)."""
+        return None
+
+    def field_solution(self, mesh, kernel, shape, control: dict, *, antisymmetric: bool = False,
+                       previous=None):
+        """The :class:`~viscocontact.contact.fields.FieldSolution` on ``mesh`` at ``control``
+        (``{"penetration": Δ̃}`` or ``{"mean_pressure": p̃∞}``); contract item 5."""
+        from ..contact.fields import solve_fields
+
+        return solve_fields(mesh, kernel, shape, antisymmetric=antisymmetric, **control)
+
+    def gap_violation(self, x, gap, fields) -> str | None:
+        """A message when the gap ``gap`` at points ``x`` outside the contacts breaks the model at
+        an equilibrium (contract item 6); None when it does not."""
         return None
 
     @abc.abstractmethod

@@ -5,6 +5,11 @@ For fixed edges the problem is linear: ``B σ̃ = r̃(ξ) - 1 + Δ̃`` at the co
 control ``σ̃ = σ_r + Δ̃ σ_1`` (``B σ_r = r̃ - 1``, ``B σ_1 = 1``) and ``Δ̃`` follows from
 ``p̃∞ = -(1/2π) Σ h_q σ̃_q``.
 
+Known loads (:class:`KnownLoads`): uniform stresses over intervals outside the contacts, such as
+the cohesive zones of a finite-range adhesion law. Their displacement at the collocation points
+is exactly an influence coefficient times their stress, so they move to the right-hand side:
+``B σ̃ = r̃ - 1 + Δ̃ - u_L(ξ)``, and they count in the load.
+
 Stress-intensity factors ``K̃ = lim σ̃ √(2π r̃)`` (``r̃`` the distance from the edge, tensile positive)
 are fitted on the elements next to each edge to the element averages of
 ``r^{-1/2}, r^{1/2}, r^{3/2}`` — the expansion of ``s(x)/√((x-a)(b-x))`` with smooth ``s``.
@@ -55,6 +60,44 @@ class NormalizedProfile:
         return self.profile.slopes(x) / self.amplitude
 
 
+def _readonly(values) -> np.ndarray:
+    out = np.array(values, dtype=float).ravel()
+    out.flags.writeable = False
+    return out
+
+
+@attrs.frozen(kw_only=True)
+class KnownLoads:
+    """Uniform stresses over intervals outside the contacts (a cohesive zone is one).
+
+    Attributes
+    ----------
+    left, right : (M,) arrays
+        Interval ends (``right > left``; any position, the kernel is periodic).
+    stress : (M,) array
+        ``σ̃`` on each interval (tensile positive).
+    """
+
+    left: np.ndarray = attrs.field(converter=_readonly, eq=attrs.cmp_using(eq=np.array_equal))
+    right: np.ndarray = attrs.field(converter=_readonly, eq=attrs.cmp_using(eq=np.array_equal))
+    stress: np.ndarray = attrs.field(converter=_readonly, eq=attrs.cmp_using(eq=np.array_equal))
+
+    @property
+    def width(self) -> np.ndarray:
+        return self.right - self.left
+
+    def force(self) -> float:
+        """``Σ σ̃ (right - left)`` (``-2π`` times their share of ``p̃∞``)."""
+        return float(self.stress @ self.width)
+
+    def displacement(self, kernel, x) -> np.ndarray:
+        """``ũ(x)`` produced by the loads: an influence coefficient per interval (eq. 4.32)."""
+        x = np.asarray(x, dtype=float)
+        if self.stress.size == 0:
+            return np.zeros(x.shape)
+        return kernel.influence(x.ravel(), self.left, self.right).dot(self.stress).reshape(x.shape)
+
+
 @attrs.frozen(kw_only=True, eq=False)
 class FieldSolution:
     """Stress, penetration and load for one set of edges.
@@ -77,6 +120,15 @@ class FieldSolution:
     rhs0: np.ndarray          # r̃(ξ) - 1 at the collocation points
     #: ``∫_{e_q} [G̃(ξ_l - y) - G̃(y - ξ_l)] dy`` on the mesh when asked for (None otherwise)
     antisymmetric: np.ndarray | None = None
+    #: stresses known outside the contacts (cohesive zones), included in ``mean_pressure``
+    loads: KnownLoads | None = None
+    #: ``B⁻¹·1`` (load control's unit-penetration field), kept for :func:`with_loads`
+    unit: np.ndarray | None = None
+
+    def displacement(self, kernel, x) -> np.ndarray:
+        """``ũ(x)`` of the contact stresses and the known loads."""
+        u = displacement(kernel, self.mesh, self.sigma, x)
+        return u if self.loads is None else u + self.loads.displacement(kernel, x)
 
 
 def solve_fields(mesh: Mesh, kernel, shape: NormalizedProfile, *, penetration=None,
@@ -108,32 +160,66 @@ def solve_fields(mesh: Mesh, kernel, shape: NormalizedProfile, *, penetration=No
         sigma = s_r + delta * s_1
     p = float(-(h @ sigma) / (2 * np.pi))
     return FieldSolution(mesh=mesh, sigma=sigma, penetration=delta, mean_pressure=p, matrix=B,
-                         lu=lu, rhs0=rhs0, antisymmetric=A)
+                         lu=lu, rhs0=rhs0, antisymmetric=A,
+                         unit=None if penetration is not None else s_1)
+
+
+def with_loads(base: FieldSolution, kernel, loads: KnownLoads, *, penetration=None,
+               mean_pressure=None, load_displacement=None) -> FieldSolution:
+    """The field of ``base``'s mesh with the known ``loads`` added, reusing its factorisation.
+
+    ``B σ̃ = r̃ - 1 + Δ̃ - u_L(ξ)`` at the collocation points; in load control
+    ``p̃∞ = -(Σ h σ̃ + Σ σ̃_L w_L)/2π`` fixes Δ̃. ``load_displacement``: ``u_L(ξ)`` when the caller
+    has it already.
+    """
+    mesh = base.mesh
+    h = mesh.width
+    u_l = (loads.displacement(kernel, mesh.mid) if load_displacement is None
+           else load_displacement)
+    sigma_l = lu_solve(base.lu, base.rhs0 - u_l, check_finite=False)
+    s_1 = (base.unit if base.unit is not None
+           else lu_solve(base.lu, np.ones_like(h), check_finite=False))
+    if penetration is not None:
+        delta = float(penetration)
+    else:
+        delta = float((-2 * np.pi * mean_pressure - h @ sigma_l - loads.force()) / (h @ s_1))
+    sigma = sigma_l + delta * s_1
+    p = float(-(h @ sigma + loads.force()) / (2 * np.pi))
+    return attrs.evolve(base, sigma=sigma, penetration=delta, mean_pressure=p, loads=loads,
+                        unit=s_1)
 
 
 def _avg_power(ra, rb, p):
     return (rb ** (p + 1) - ra ** (p + 1)) / ((p + 1) * (rb - ra))
 
 
-def edge_fit(ra, rb, values, n_fit: int = N_FIT):
-    """Least-squares coefficients of ``r^{-1/2}, r^{1/2}, r^{3/2}`` from element averages."""
+def edge_fit(ra, rb, values, n_fit: int = N_FIT, powers=_POWERS):
+    """Least-squares coefficients of ``r^{-1/2}, r^{1/2}, r^{3/2}`` (or ``powers``) from element
+    averages."""
     ra, rb, values = ra[:n_fit], rb[:n_fit], values[:n_fit]
-    A = np.column_stack([_avg_power(ra, rb, p) for p in _POWERS])
+    A = np.column_stack([_avg_power(ra, rb, p) for p in powers])
     scale = np.linalg.norm(A, axis=0)
     coef, *_ = np.linalg.lstsq(A / scale, values, rcond=None)
     return coef / scale
 
 
-def stress_intensity(mesh: Mesh, values: np.ndarray) -> np.ndarray:
-    """``K̃ = σ̃√(2π r̃)`` at every edge (order ``X_1, X_2, ...``) of a piecewise-constant field."""
+#: The fit's powers at an edge where the stress meets a known finite stress outside (a cohesive
+#: zone): the constant it tends to is fitted too.
+BOUNDED_POWERS = (-0.5, 0.0, 0.5, 1.5)
+
+
+def stress_intensity(mesh: Mesh, values: np.ndarray, powers=_POWERS) -> np.ndarray:
+    """``K̃ = σ̃√(2π r̃)`` at every edge (order ``X_1, X_2, ...``) of a piecewise-constant field
+    (``powers``: of the fit, the first being -1/2)."""
     out = np.empty(2 * mesh.n_contacts)
     for j in range(mesh.n_contacts):
         sl = mesh.slice(j)
         a, b, v = mesh.left[sl], mesh.right[sl], values[sl]
         xl, xr = mesh.edges[2 * j], mesh.edges[2 * j + 1]
         n_fit = min(N_FIT, max(3, len(v) // 2))
-        cl = edge_fit(a - xl, b - xl, v, n_fit)
-        cr = edge_fit((xr - b)[::-1], (xr - a)[::-1], v[::-1], n_fit)
+        n_fit = max(n_fit, len(powers))
+        cl = edge_fit(a - xl, b - xl, v, n_fit, powers)
+        cr = edge_fit((xr - b)[::-1], (xr - a)[::-1], v[::-1], n_fit, powers)
         out[2 * j] = cl[0] * np.sqrt(2 * np.pi)
         out[2 * j + 1] = cr[0] * np.sqrt(2 * np.pi)
     return out
@@ -150,18 +236,28 @@ def displacement(kernel, mesh: Mesh, sigma: np.ndarray, x: np.ndarray, chunk: in
     return res.reshape(x.shape)
 
 
-def friction(mesh: Mesh, sigma: np.ndarray, shape: NormalizedProfile, mean_pressure: float):
+def friction(mesh: Mesh, sigma: np.ndarray, shape: NormalizedProfile, mean_pressure: float,
+             loads: KnownLoads | None = None):
     """Viscoelastic friction coefficient, positive when it opposes sliding.
 
     ``μ = -(1/(λ0 p∞)) ∫ p u' dx`` (eq. 4.16 with the sign that makes it the dissipated power over
     V·load; see docs/kernels.md) ``= (1/(2π p̃∞)) Σ_q σ̃_q [q0 r(b_q) - q0 r(a_q)]`` exactly for
     piecewise-constant stress, since ``u' = r'`` in contact. NaN when the mean pressure is zero
     to round-off (a contact held by adhesion at zero load has no friction coefficient).
+
+    Known ``loads`` (cohesive zones) act between the surfaces; the force they exert on the rigid
+    profile is ``Σ σ̃_L [q0 r(right) - q0 r(left)]`` (the traction times the profile's slope).
+    The power fed into the solid takes ``u'`` instead of ``r'`` there; the two differ by
+    ``σ̃_L`` times the gap change across each zone, which cancels between the zones of a contact
+    whose gaps run from 0 to the same range (the bonding and the debonding edge).
     """
     prof = shape.profile
     work = sigma @ (prof.heights(mesh.right) - prof.heights(mesh.left))
-    # a mean pressure at the round-off of the load sum carries no friction coefficient
     load_scale = float(np.sum(np.abs(mesh.width * sigma))) / (2 * np.pi)
+    if loads is not None and loads.stress.size:
+        work += loads.stress @ (prof.heights(loads.right) - prof.heights(loads.left))
+        load_scale += float(np.sum(np.abs(loads.width * loads.stress))) / (2 * np.pi)
+    # a mean pressure at the round-off of the load sum carries no friction coefficient
     if not abs(mean_pressure) > 1e-12 * load_scale:
         return float("nan")
     return float(work / (2 * np.pi * mean_pressure))

@@ -186,7 +186,11 @@ def problem_jacobian(problem: NonlinearProblem, fun: CountedResidual, x: np.ndar
 
 
 def linear_solve(J: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``J⁻¹b``; least squares (minimum norm) when J is singular or ill-conditioned."""
+    """``J⁻¹b``; least squares (minimum norm) when J is singular or ill-conditioned; NaN when
+    J is not finite (a differenced column crossed into points where the residual is undefined),
+    which the solvers report as a failed step."""
+    if not (np.all(np.isfinite(J)) and np.all(np.isfinite(b))):
+        return np.full(np.shape(b), np.nan)
     try:
         if np.linalg.cond(J) < 1e14:
             return np.linalg.solve(J, b)

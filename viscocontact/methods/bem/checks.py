@@ -7,7 +7,6 @@ import functools
 
 import numpy as np
 
-from ...contact.fields import displacement
 from ...contact.topology import TWO_PI, negative_regions
 from .sets import Control, first_touch, inside
 
@@ -50,15 +49,16 @@ class Checks:
                 keep &= ~((x + shift > a - pad) & (x + shift < b + pad))
         xs = x[keep]
         if mesh.n_contacts:
-            u = displacement(self.prep.kernel, mesh, fields.sigma, xs)
+            u = fields.displacement(self.prep.kernel, xs)
         else:
             u = np.zeros_like(xs)
         w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
         return xs, u - w
 
-    def births(self, fields):
-        """Regions ``(a, b, depth)`` outside the contacts where the profile penetrates."""
-        xs, gap = self.gap_outside(fields)
+    def births(self, fields, outside=None):
+        """Regions ``(a, b, depth)`` outside the contacts where the profile penetrates
+        (``outside``: :meth:`gap_outside` of ``fields`` when at hand)."""
+        xs, gap = self.gap_outside(fields) if outside is None else outside
         return negative_regions(xs, gap, 1e-9)
 
     def births_without_contact(self, control: Control):
@@ -85,7 +85,7 @@ class Checks:
         if not within.any():
             return 0.0
         xs = x[within]
-        u = (displacement(self.prep.kernel, mesh, fields.sigma, xs) if grid_displacement is None
+        u = (fields.displacement(self.prep.kernel, xs) if grid_displacement is None
              else grid_displacement[within])
         w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
         return float(np.max(np.abs(u - w)))
@@ -94,8 +94,13 @@ class Checks:
         """Pressure, displacement and gap on the check grid."""
         x = self.grid()
         mesh = fields.mesh
-        u = displacement(self.prep.kernel, mesh, fields.sigma, x)
+        u = fields.displacement(self.prep.kernel, x)
         pres = np.zeros_like(x)
+        loads = fields.loads
+        if loads is not None:            # known stresses outside the contacts (cohesive zones)
+            for lo, hi, s in zip(loads.left, loads.right, loads.stress):
+                for shift in (-TWO_PI, 0.0, TWO_PI):
+                    pres = np.where((x + shift >= lo) & (x + shift <= hi), -s, pres)
         for shift in (-TWO_PI, 0.0, TWO_PI):
             idx = np.searchsorted(mesh.right, x + shift)
             ok = idx < len(mesh.right)

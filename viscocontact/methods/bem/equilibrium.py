@@ -171,10 +171,12 @@ class Equilibrium:
             log.count(system, res)
             if not res.converged:
                 fields, ctx, r = system.evaluate(res.x)
+                why = ("" if system.limitation is None
+                       else f" (the adhesion model rejected a trial point: {system.limitation})")
                 return State(outcome=Outcome.NOT_CONVERGED, edges=res.x, fields=fields, ctx=ctx,
                              residual=float(np.max(np.abs(r))),
                              message=f"edge solve did not converge: {res.status.value}: "
-                                     f"{res.message}")
+                                     f"{res.message}{why}")
             x = res.x
             fields, ctx, r = system.evaluate(x)
             size = float(np.max(np.abs(r)))
@@ -183,7 +185,11 @@ class Equilibrium:
                 return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
                              residual=size, message=message)
 
-            regions = self.checks.births(fields)
+            xs, gap = self.checks.gap_outside(fields)          # once, for both checks
+            violation = self.adhesion.gap_violation(xs, gap, fields)
+            if violation is not None:
+                return not_converged(violation)
+            regions = self.checks.births(fields, (xs, gap))
             if regions and any(len(x) == len(y) and np.allclose(x, y, rtol=0, atol=1e-7)
                                for y in converged_before_births):
                 # the same equilibrium again: the contacts born from it last time vanished
@@ -324,7 +330,8 @@ class Equilibrium:
             xp = x * (1.0 + 1e-13)
             r1 = system.residual(xp)
             r0 = system.residual(x)           # last: the solver's first call finds it cached
-            d = np.abs(r1 - r0)
+            with np.errstate(invalid="ignore"):      # inf - inf: a point a model rejects
+                d = np.abs(r1 - r0)
             self._noise[n] = float(np.max(d)) if np.all(np.isfinite(d)) else 0.0
         floor = 4.0 * self._noise[n]
         if floor <= tolerances.residual:

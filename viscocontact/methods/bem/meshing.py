@@ -86,7 +86,8 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     already resolves. Neither does a kernel whose memory lengths are all below
     ``SMALLEST_RESOLVED`` or above the period. A finite advance δX always gets zones aligned with
     it, so that the enlarged contact of the energy balance is the bordered base mesh
-    (:meth:`~viscocontact.contact.edges.EdgeContext.bordered_release`).
+    (:meth:`~viscocontact.contact.edges.EdgeContext.bordered_release`); other adhesion lengths
+    (a cohesive zone) only set the smallest element.
     """
     memory = [float(z) for z in getattr(kernel, "zetas", ())]
     advance = [ell for ell in adhesion.resolved_lengths() if ell > 0]
@@ -98,8 +99,10 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     smallest = None
     if lengths:
         smallest = max(disc.edge_resolution * min(lengths), SMALLEST_RESOLVED)
+    edge_advance = float(adhesion.edge_advance())
     return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading,
-                    smallest=smallest, advance=min(advance) if advance and smallest else None)
+                    smallest=smallest, advance=edge_advance if edge_advance > 0 and smallest
+                    else None)
 
 
 class MeshPolicy:

@@ -115,7 +115,7 @@ class Solve:
             mesh = fields.mesh
             area = float(np.sum(mesh.width))
             pm = fields.mean_pressure
-            mu = friction(mesh, fields.sigma, self.prep.shape, pm)
+            mu = friction(mesh, fields.sigma, self.prep.shape, pm, fields.loads)
             converged = kind is Outcome.CONVERGED
             terms = adh.edge_terms(out.ctx) if converged else None
             _, gap = self.checks.gap_outside(fields)

@@ -13,8 +13,8 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
+from ...adhesion.base import AdhesionLimitation
 from ...contact.edges import EdgeContext
-from ...contact.fields import solve_fields
 from ...contact.mesh import build_mesh, zone_patterns
 from ...contact.sensitivity import FieldSensitivity
 from ...contact.topology import TopologyChange, repair
@@ -90,6 +90,9 @@ class EdgeSystem:
         self.last_valid = None      # last edge vector that was a valid contact set
         self._last_size = None      # max |r| where the previous Jacobian was taken
         self._derivatives = None    # (x key, derivatives) of the last analytic Jacobian
+        self._previous = None       # field of the last valid evaluation (a start for the model)
+        #: why the adhesion model rejected the last point it could not handle (None: none yet)
+        self.limitation: str | None = None
 
     def evaluate(self, x):
         """``(fields, ctx, r)`` at ``x`` (the last evaluation is cached). Every evaluation
@@ -106,8 +109,17 @@ class EdgeSystem:
         prep = self.prep
         mesh = build_mesh(x, self.spec, self.zones, self.counts)
         # a finite edge advance: the energy balance needs the kernel's non-reciprocal part too
-        fields = solve_fields(mesh, prep.kernel, prep.shape, **self.control.fields_kwargs(),
-                              antisymmetric=self.adhesion.edge_advance() > 0)
+        try:
+            fields = self.adhesion.field_solution(
+                mesh, prep.kernel, prep.shape, self.control.fields_kwargs(),
+                antisymmetric=self.adhesion.edge_advance() > 0, previous=self._previous)
+        except AdhesionLimitation as exc:
+            # a point the model cannot handle: invalid for the solver, which steps back
+            self.limitation = str(exc)
+            r = np.full(len(x), np.inf)
+            self.cache = {key: (None, None, r)}
+            return None, None, r
+        self._previous = fields
         ctx = EdgeContext(fields, prep.kernel, prep.shape, self.spec, prep.shape.amplitude,
                           self.zones, self.counts)
         r = self.adhesion.residuals(ctx)
@@ -181,18 +193,30 @@ class EdgeSystem:
         if slow and n <= FULL_JACOBIAN_EDGES:
             J = np.empty((n, n))
             for i in range(n):
-                xp = x.copy()
-                xp[i] += h[i // 2]
-                J[:, i] = (self.residual(xp) - r0) / h[i // 2]
+                J[:, i] = self._column(x, r0, i, h[i // 2])
             return J
         J = np.zeros((n, n))
         for parity in (0, 1):
             xp = x.copy()
             xp[parity::2] += h
             dr = self.residual(xp) - r0
+            if not np.all(np.isfinite(dr)):      # forward into invalid points: step back
+                xp[parity::2] -= 2 * h
+                dr = r0 - self.residual(xp)
             for j in range(n // 2):
                 J[2 * j:2 * j + 2, 2 * j + parity] = dr[2 * j:2 * j + 2] / h[j]
         return J
+
+    def _column(self, x, r0, i: int, h: float) -> np.ndarray:
+        """Column ``i`` of the difference Jacobian: forward, or backward when the forward point
+        is invalid (a model limitation there: non-finite residual)."""
+        xp = x.copy()
+        xp[i] += h
+        col = (self.residual(xp) - r0) / h
+        if not np.all(np.isfinite(col)):
+            xp[i] -= 2 * h
+            col = (r0 - self.residual(xp)) / h
+        return col
 
     def orientation(self):
         """+1 for right edges, -1 for left ones (outward)."""

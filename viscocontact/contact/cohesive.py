@@ -1,0 +1,196 @@
+r"""Cohesive zones of a Dugdale law at the contact edges: their lengths for given edges.
+
+Every edge ``X_i`` of a contact carries a zone outside it, ``[X_i - d_i, X_i]`` at a left edge and
+``[X_i, X_i + d_i]`` at a right one, where a known uniform tensile stress ``σ̃0`` acts (a
+:class:`~viscocontact.contact.fields.KnownLoads` interval). For fixed edges and zone lengths the
+problem is linear (:func:`~viscocontact.contact.fields.with_loads`, on the factorisation of the
+contact mesh). :func:`zone_fields` sets the lengths so that the stress is bounded at every edge
+(the Maugis–Dugdale condition ``K̃_i = 0``); the tip condition ``g̃(c_i) = η`` is the outer
+system's residual (:class:`~viscocontact.adhesion.MaugisDugdale`).
+
+Why that split and not the other: at fixed edges the tip gap is stationary in the zone length
+exactly where the stress is bounded (Dugdale's opening at the zone end,
+``δ = (8/E')(K√(d/2π) - σ0 d/π)``, is largest at ``d = πK²/(8σ0²)``, where ``K`` is cancelled),
+so ``g̃(c_i) = η`` has a double root there and cannot fix ``d_i``; ``K̃_i(d)`` instead falls
+monotonically with the zone (like ``-σ̃0√(8d_i/π)``), and at fixed bounded stress the tip gap rises
+monotonically as the edge moves out (``δ = K²/(σ0E')``).
+
+Failures raise :class:`ZoneError` with the reason: the zones of neighbouring contacts (or of one
+contact across the period) meet, or the iteration does not converge.
+"""
+from __future__ import annotations
+
+import numpy as np
+from scipy import optimize
+
+from ..errors import ViscoContactError
+from .fields import BOUNDED_POWERS, FieldSolution, KnownLoads, stress_intensity, with_loads
+
+#: Accuracy of the bounded-stress condition, relative to ``σ̃0·√ℓ`` with ℓ the longest zone or
+#: the mean contact half-width, whichever is longer (a zone's own K̃) ...
+EDGE_TOLERANCE = 1e-11
+#: ... or, once it stops decreasing, this (the round-off of the fit) ...
+NOISE = 1e-8
+#: ... or the largest change of ``√d`` relative to the largest ``√d`` that ends the iteration.
+EDGE_STEP = 1e-12
+#: Newton iterations before giving up.
+ITERATIONS = 60
+#: Zones are kept this fraction of the free interval short of meeting their neighbour.
+ROOM = 1.0 - 1e-9
+
+
+class ZoneError(ViscoContactError):
+    """The cohesive zones of a contact set have no admissible lengths (the reason says why)."""
+
+
+def zone_loads(edges: np.ndarray, lengths: np.ndarray, stress: float) -> KnownLoads:
+    """The zones of ``edges`` (order ``X_1, X_2, ...``) with lengths ``d_i``, as known loads."""
+    edges = np.asarray(edges, dtype=float)
+    d = np.asarray(lengths, dtype=float)
+    left = np.where(np.arange(len(edges)) % 2 == 0, edges - d, edges)
+    return KnownLoads(left=left, right=left + d, stress=np.full(len(edges), float(stress)))
+
+
+def tips(edges: np.ndarray, lengths: np.ndarray) -> np.ndarray:
+    """Zone tips ``c_i``: left edges minus ``d_i``, right edges plus ``d_i``."""
+    return np.asarray(edges, float) + np.tile([-1.0, 1.0], len(edges) // 2) * lengths
+
+
+def room(edges: np.ndarray) -> np.ndarray:
+    """Free length next to each edge, shared with the facing edge of the neighbouring contact
+    (periodic): ``room[i]`` for a right edge and the next left edge is the same gap."""
+    e = np.asarray(edges, dtype=float)
+    gaps = np.roll(e, -1)[1::2] - e[1::2]           # right edge j to left edge j + 1
+    gaps[-1] += 2 * np.pi
+    out = np.empty(len(e))
+    out[1::2] = gaps
+    out[0::2] = np.roll(gaps, 1)
+    return out
+
+
+def _partner(n: int) -> np.ndarray:
+    """Index of the edge facing each edge across its free interval (periodic)."""
+    idx = np.arange(n)
+    return np.where(idx % 2 == 1, (idx + 1) % n, (idx - 1) % n)
+
+
+def tip_gaps(fields: FieldSolution, kernel, shape, c: np.ndarray) -> np.ndarray:
+    """``g̃(c_i)`` of a field with its zones."""
+    return fields.displacement(kernel, c) - (shape.heights(c) - 1.0 + fields.penetration)
+
+
+def intensity(fields: FieldSolution) -> np.ndarray:
+    """``K̃`` at every edge of a contact stress that tends to a constant there (the zone's
+    ``σ̃0`` once the zone is resolved, 0 without a zone): the fit of
+    :func:`~viscocontact.contact.fields.stress_intensity` with a constant added
+    (:data:`~viscocontact.contact.fields.BOUNDED_POWERS`), so that it is continuous in the zone
+    length down to zero. Uncalibrated: only its root and sign matter."""
+    return stress_intensity(fields.mesh, fields.sigma, BOUNDED_POWERS)
+
+
+def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
+                start: np.ndarray) -> FieldSolution:
+    """The field of ``base``'s contacts with the zones that bound the stress at every edge.
+
+    For fixed contact edges, each zone length ``d_i`` is set so that the stress is bounded at its
+    edge, ``K̃_i(d) = 0`` (the zone's tension cancels the singularity). ``K̃_i`` falls like
+    ``-σ̃0√(8d_i/π)`` with its own zone, so the equations are solved by Newton's method in
+    ``t_i = √d_i`` (Jacobian differenced on the factorisation at hand: one load solve per zone).
+    An edge whose stress is compressive without any zone (``K̃_i < 0`` at ``d_i = 0``) gets none.
+    The closing condition of the tips, ``g̃(c_i) = η``, is left to the outer (edge) system:
+    at fixed edges the tip gap is stationary in the zone length exactly where ``K̃_i = 0``
+    (Dugdale: ``δ = (8/E')(K√(d/2π) - σ0 d/π)``), so it cannot fix ``d_i`` itself.
+
+    Parameters
+    ----------
+    base : FieldSolution
+        The contact field without zones (its factorisation is reused).
+    kernel
+        Prepared kernel.
+    stress : float
+        ``σ̃0`` (tensile, > 0).
+    control : dict
+        ``{"penetration": Δ̃}`` or ``{"mean_pressure": p̃∞}``.
+    start : (n_edges,) array
+        Zone lengths to start from (>= 0).
+
+    Returns
+    -------
+    FieldSolution
+        With ``loads`` the zones (:func:`zone_loads`) at the solution.
+
+    Raises
+    ------
+    ZoneError
+        When the zones meet a neighbour's or the iteration does not converge.
+    """
+    edges = base.mesh.edges
+    n = len(edges)
+    free = ROOM * room(edges)
+    partner = _partner(n)
+
+    def evaluate(t):
+        f = with_loads(base, kernel, zone_loads(edges, t * t, stress), **control)
+        return f, intensity(f)
+
+    t = np.sqrt(np.clip(np.asarray(start, dtype=float), 0.0, 0.5 * free))
+    half = 0.5 * float(np.mean(edges[1::2] - edges[0::2]))
+    fields, k = evaluate(t)
+    capped = np.zeros(n, bool)
+    last = np.inf
+    for _ in range(ITERATIONS):
+        scale = stress * np.sqrt(max(float(np.max(t * t)), half))
+        active = ~((t == 0.0) & (k <= 0.0))
+        size = float(np.max(np.abs(k[active]))) if np.any(active) else 0.0
+        if size <= EDGE_TOLERANCE * scale + 1e-15:
+            return fields
+        if size <= NOISE * scale and size > 0.5 * last:
+            return fields                 # at the fit's round-off: no longer decreasing
+        last = size
+        idx = np.flatnonzero(active)
+        J = np.empty((idx.size, idx.size))
+        for col, j in enumerate(idx):
+            h = 1e-7 * max(t[j], float(np.max(t)), 1e-8)
+            tj = t.copy()
+            tj[j] += h
+            J[:, col] = (evaluate(tj)[1][idx] - k[idx]) / h
+        beyond = np.diag(J) >= 0.0
+        if np.any(beyond):
+            # past the minimum of K̃ in the zone length (zones long against the contact undo
+            # their own screening): back towards the smallest root
+            t = t.copy()
+            t[idx[beyond]] *= 0.3
+            fields, k = evaluate(t)
+            continue
+        try:
+            step = np.linalg.solve(J, -k[idx])
+        except np.linalg.LinAlgError:
+            raise ZoneError("the bounded-stress equations of the zones are singular") from None
+        if not np.all(np.isfinite(step)):
+            raise ZoneError("the bounded-stress equations of the zones gave a non-finite step")
+        new = t.copy()
+        new[idx] = t[idx] + step
+        # a step past zero shrinks the zone to a tenth of its length (an edge whose stress is
+        # compressive without a zone ends at zero through the active set)
+        new = np.where(new < 0.0, np.where(t > 1e-9 * max(float(np.max(t)), 1e-300), 0.3 * t,
+                                           0.0), new)
+        d = new * new
+        over = d + d[partner] > free
+        if np.any(over):
+            if np.any(over & capped):
+                raise ZoneError(_MEET)
+            d = np.where(over, d / (d + d[partner]) * free, d)
+            new = np.sqrt(d)
+        capped = over
+        done = float(np.max(np.abs(new - t))) <= EDGE_STEP * max(float(np.max(new)), 1e-300)
+        t = new
+        fields, k = evaluate(t)
+        if done:
+            return fields
+    raise ZoneError(f"the bounded-stress equations of the zones did not converge in "
+                    f"{ITERATIONS} Newton iterations (largest K̃ {np.max(np.abs(k)):.3g})")
+
+
+_MEET = ("the cohesive zones of neighbouring contacts (or of one contact across the period) "
+         "meet: the gap stays below the range h0 between them, which this model does not "
+         "handle (a zone without contact edges)")
