@@ -1,17 +1,18 @@
-"""Solves that once ended without an answer: a stiff solid whose trailing edge has a boundary
-layer narrower than the memory length, ..."""
+"""Solves that once ended without an answer: an adhesive contact whose approach branch ends at a
+fold below the target load, a stiff solid whose trailing edge has a boundary layer narrower than
+the memory length, ..."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from viscocontact.adhesion import NoAdhesion
+from viscocontact.adhesion import EnergyBalance, NoAdhesion
 from viscocontact.methods.bem import BEM
 from viscocontact.methods.bem.meshing import Discretization, mesh_spec
 from viscocontact.problem import ContactProblem
 from viscocontact.profiles import Sinusoid
 from viscocontact.rheology import StandardLinearSolid
-from viscocontact.solvers import Newton
+from viscocontact.solvers import Broyden, Newton
 
 STIFF = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=1e4),
                        adhesion=NoAdhesion(), solver=Newton(), method=BEM(),
@@ -41,3 +42,21 @@ def test_a_stiff_solid_trailing_edge_is_not_split_by_a_spurious_tension():
     assert result.area == pytest.approx(1.96313, rel=1e-4)
     assert result.mean_pressure == pytest.approx(0.49878, abs=1e-9)
     assert not any("split" in e for e in result.extras["events"])
+
+
+def test_a_load_above_the_branch_maximum_closes_the_contact():
+    """Adhesive sinusoid (Λ̃ = 0.05, γ̃ = 5e-5: Γ̃ = 0.02, δX = 0) on β = 10 at ζ = 1, Broyden,
+    p̃∞ = 0.3. The approach branch carries at most p̃∞ ≈ 0.05 (Δ̃ ≈ 0.65; the toughened trailing
+    edge: Johnson's closure load is 0.415 with E0 and Γ̃, -0.39 with E0 and βΓ̃) and ends at a
+    penetration fold near Δ̃ = 0.883, past which no single contact is steady: the snap found
+    nothing and the solve ended "not converged". Under the target load every contact has an edge
+    that advances; finished in load control from the fold, the contact closes."""
+    problem = ContactProblem(profile=Sinusoid(amplitude=0.05),
+                             rheology=StandardLinearSolid(beta=10.0),
+                             adhesion=EnergyBalance(gamma=5e-5, edge_perturbation=0.0),
+                             solver=Broyden(), mean_pressure=0.3, zeta=1.0)
+    result = problem.solve()
+    assert result.converged, result.message
+    assert result.full_contact
+    assert result.mean_pressure == 0.3
+    assert any("solved in load control" in e for e in result.extras["events"])

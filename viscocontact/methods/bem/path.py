@@ -119,6 +119,12 @@ class Path:
                 # the branch ends (a fold): the contact jumps; look for the state it lands on
                 jump = self.snap(state.edges, Control.penetration_of(d_next),
                                  polish=d_next == d_end)
+                if jump is None and d_end is None:
+                    # the branch ends below the target load and no contact set lands past the
+                    # fold in penetration control: finish in load control
+                    log.event(f"the approach branch ends at penetration {d_prev:.6g} below the "
+                              "target load; solved in load control from there")
+                    return eq.solve(state.edges, target)
                 if jump is None:
                     return trial
                 if jump.outcome is Outcome.FULL_CONTACT:
