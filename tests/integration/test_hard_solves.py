@@ -65,8 +65,8 @@ def test_a_load_above_the_branch_maximum_closes_the_contact():
     assert any("solved in load control" in e for e in result.extras["events"])
 
 
-#: The rough case of thesis Fig. 4.8 (examples/scenes/thesis_rough.toml) with 4 times its γ̃, ζ = 1e-2,
-#: 32 elements per contact.
+#: The rough case of thesis Fig. 4.8 (examples/scenes/thesis_rough.toml) with 4 times its γ̃,
+#: ζ = 1e-2, 32 elements per contact.
 ROUGH = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.010005072145190424,
                                                  seed=0),
                        rheology=StandardLinearSolid(beta=10.0),
