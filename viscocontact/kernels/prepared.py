@@ -92,9 +92,9 @@ class PreparedKernel:
         """``ζ τ_r,i/τ`` of the active branches, ascending: the memory lengths of the relaxation
         times of the creep spectrum ``K∞ + Σ w_i (1 - exp(-x/ζ_i))`` (the zeros of its Laplace
         transform, which interlace with the creep times; a standard linear solid has one,
-        ``ζ/β``). Below the shortest one the solid is glassy; a stress carried by the slow branches
-        reaches zero there, so a trailing edge of a stiff solid (large ``β``) has a boundary layer
-        that wide. Empty without active branches."""
+        ``ζ/β``). Below the shortest one the solid is glassy; a stress carried by the slow
+        branches reaches zero there, so a trailing edge of a stiff solid (large ``β``) has a
+        boundary layer that wide. Empty without active branches."""
         if self.weights.size == 0 or self.instantaneous <= 0:
             return np.empty(0)
         from ..rheology.prony import creep_to_relaxation
