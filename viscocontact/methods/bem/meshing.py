@@ -33,8 +33,9 @@ class Discretization:
         Size of the element at every edge relative to the smallest physical length below the
         contact scale: the memory length of each dissipative relaxation branch (``ζ τ_i/τ``) and
         the adhesion model's lengths (a finite δX). Geometric edge zones (ratio ``grading``) reach
-        it (see :mod:`viscocontact.contact.mesh`). ``None`` meshes with eq. 4.22 alone, which
-        resolves a length ℓ at an edge only when N ≳ √(α/ℓ).
+        it (see :mod:`viscocontact.contact.mesh`); the element at the edge is never wider than
+        the shortest relaxation length (:func:`mesh_spec`). ``None`` meshes with eq. 4.22 alone,
+        which resolves a length ℓ at an edge only when N ≳ √(α/ℓ).
     grading : float
         Ratio of consecutive element sizes in the edge zones.
     check_points : int
