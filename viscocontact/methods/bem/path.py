@@ -289,12 +289,14 @@ class Path:
         is moved inward by a step that doubles each time, from a quarter of its contact's
         half-width; edges that do not are held; contacts that vanish detach. Once no edge wants
         to recede the equilibrium is solved from there (with no contact left: the state without
-        contact, births checked). Without this, solvers chased a contact shrunk to a few
-        thousandths that no longer shrinks but slides along the profile (its trailing edge
-        advancing, its leading edge receding) until their budgets ran out.
+        contact, births checked); None when no edge recedes at the start. Without this, solvers
+        chased a contact shrunk to a few thousandths that no longer shrinks but slides along the
+        profile (its trailing edge advancing, its leading edge receding) until their budgets ran
+        out.
         """
         x = np.asarray(edges, dtype=float).copy()
         factor = 0.25
+        moved = False
         while x.size and factor < 1e4:
             r = self.eq.residual_at(x, control)
             if r is None or not np.all(np.isfinite(r)):
@@ -302,12 +304,15 @@ class Path:
             recede = r > 0
             if not np.any(recede):
                 break
+            moved = True
             half = np.repeat(0.5 * (x[1::2] - x[0::2]), 2)
             trial = x + np.where(recede, factor * half, 0.0) * np.tile([1.0, -1.0], len(x) // 2)
             factor *= 2.0
             x, changed, _, _ = repair(trial, MIN_WIDTH, MIN_GAP)
             if changed:
                 factor = 0.25           # a contact detached (or two merged): start again
+        if not moved:
+            return None                 # no edge recedes: not a pull-off
         out = self.eq.solve(x, control)
         if out.outcome in (Outcome.CONVERGED, Outcome.NO_CONTACT, Outcome.FULL_CONTACT):
             self.log.event("contacts released past the fold of their branch"
