@@ -88,6 +88,19 @@ class PreparedKernel:
                    correction_values=corr_v, all_weights=w_all, all_zetas=z_all, k_inf=k_inf,
                    regimes=regime, tolerance=tolerance)
 
+    def relaxation_lengths(self) -> np.ndarray:
+        """``ζ τ_r,i/τ`` of the active branches, ascending: the memory lengths of the relaxation
+        times of the creep spectrum ``K∞ + Σ w_i (1 - exp(-x/ζ_i))`` (the zeros of its Laplace
+        transform, which interlace with the creep times; a standard linear solid has one,
+        ``ζ/β``). Below the shortest one the solid is glassy; a stress carried by the slow
+        branches reaches zero there, so a trailing edge of a stiff solid (large ``β``) has a
+        boundary layer that wide. Empty without active branches."""
+        if self.weights.size == 0 or self.instantaneous <= 0:
+            return np.empty(0)
+        from ..rheology.prony import creep_to_relaxation
+
+        return creep_to_relaxation(self.instantaneous, self.weights, self.zetas)[2]
+
     # ---- Fourier view ----------------------------------------------------------------------
     def compliance(self, m):
         """``K(m) = K∞ + Σ w_i/(1 - i m ζ_i)`` (all branches, no limits applied)."""

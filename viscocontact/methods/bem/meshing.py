@@ -33,8 +33,9 @@ class Discretization:
         Size of the element at every edge relative to the smallest physical length below the
         contact scale: the memory length of each dissipative relaxation branch (``ζ τ_i/τ``) and
         the adhesion model's lengths (a finite δX). Geometric edge zones (ratio ``grading``) reach
-        it (see :mod:`viscocontact.contact.mesh`). ``None`` meshes with eq. 4.22 alone, which
-        resolves a length ℓ at an edge only when N ≳ √(α/ℓ).
+        it (see :mod:`viscocontact.contact.mesh`); the element at the edge is never wider than
+        the shortest relaxation length (:func:`mesh_spec`). ``None`` meshes with eq. 4.22 alone,
+        which resolves a length ℓ at an edge only when N ≳ √(α/ℓ).
     grading : float
         Ratio of consecutive element sizes in the edge zones.
     check_points : int
@@ -77,9 +78,31 @@ INTERIOR_CAP = 512
 SMALLEST_RESOLVED = 1e-6
 
 
+#: Relative margin by which the shortest relaxation length must undercut ``edge_resolution`` times
+#: the shortest memory length to set the edge element (round-off: a standard linear solid with
+#: ``β = 1/edge_resolution`` has the two equal).
+RELAXATION_MARGIN = 1e-9
+
+
+def relaxation_lengths(kernel) -> np.ndarray:
+    """The prepared kernel's relaxation lengths (none for a kernel that does not give them)."""
+    lengths = getattr(kernel, "relaxation_lengths", None)
+    return np.asarray(lengths(), dtype=float) if lengths is not None else np.empty(0)
+
+
 def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     """The mesh of a problem: eq. 4.22 plus edge zones down to ``edge_resolution`` times the
-    smallest physical length (memory lengths of the dissipative branches, adhesion lengths).
+    smallest physical length (memory lengths of the dissipative branches, adhesion lengths), and
+    no coarser than the shortest relaxation length ``ζ τ_r/τ`` (a standard linear solid's
+    ``ζ/β``).
+
+    A stiff solid (``β`` above ``1/edge_resolution``) carries most of its compliance in the slow
+    branches; at a trailing edge the stress they carry falls to zero across a layer of the
+    relaxation length. Edge elements wider than it alternate in sign there (β = 1e4 at ζ = 1:
+    elements of 8e-4 across a layer of 1e-4 gave a spurious tension of 1e-3 of the largest
+    pressure, and the adhesionless contact was split and merged again endlessly); one element
+    per relaxation length gives a smooth layer. Up to ``β = 1/edge_resolution`` the memory
+    rule is the finer one and the mesh does not change.
 
     Without a finite edge advance, an elastic kernel (no dissipative branch) gets no zones: its
     edge fields are self-similar square-root fields, which eq. 4.22 with the calibrated fit
@@ -98,7 +121,13 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
                + [ell for ell in advance if ell < TWO_PI])
     smallest = None
     if lengths:
-        smallest = max(disc.edge_resolution * min(lengths), SMALLEST_RESOLVED)
+        smallest = disc.edge_resolution * min(lengths)
+        relaxation = [ell for ell in relaxation_lengths(kernel) if ell < TWO_PI]
+        if relaxation and min(relaxation) < smallest * (1.0 - RELAXATION_MARGIN):
+            # no edge element wider than the shortest relaxation length: the stress the slow
+            # branches carry drops to zero across it at a trailing edge
+            smallest = min(relaxation)
+        smallest = max(smallest, SMALLEST_RESOLVED)
     edge_advance = float(adhesion.edge_advance())
     return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading,
                     smallest=smallest, advance=edge_advance if edge_advance > 0 and smallest

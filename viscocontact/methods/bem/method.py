@@ -86,6 +86,9 @@ class Solve:
         elif initial is not None:
             edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()
             out = self.equilibrium.solve(edges, target)
+            if out.outcome is Outcome.NOT_CONVERGED and adhesive and not target.is_load:
+                # retracted past the fold of its branch, the contact pulls off
+                out = self.path.release(edges, target) or out
             if out.outcome is Outcome.NOT_CONVERGED and not adhesive:
                 # an adhesionless equilibrium does not depend on the path: start afresh
                 self.log.event(f"no equilibrium from the given contact set ({out.message}); "

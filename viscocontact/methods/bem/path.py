@@ -119,6 +119,12 @@ class Path:
                 # the branch ends (a fold): the contact jumps; look for the state it lands on
                 jump = self.snap(state.edges, Control.penetration_of(d_next),
                                  polish=d_next == d_end)
+                if jump is None and d_end is None:
+                    # the branch ends below the target load and no contact set lands past the
+                    # fold in penetration control: finish in load control
+                    log.event(f"the approach branch ends at penetration {d_prev:.6g} below the "
+                              "target load; solved in load control from there")
+                    return eq.solve(state.edges, target)
                 if jump is None:
                     return trial
                 if jump.outcome is Outcome.FULL_CONTACT:
@@ -271,6 +277,47 @@ class Path:
             if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT):
                 return out
             return None
+        return None
+
+    def release(self, edges, control: Control) -> State | None:
+        """Equilibrium reached by an unstable recession of the contacts (or None): the pull-off
+        counterpart of :meth:`snap`.
+
+        Retracted past the fold of its branch, an adhesive contact has no equilibrium near its
+        last one: it shrinks and detaches at once (the end of the displacement-controlled branch,
+        point B of the thesis's Fig. 1.6). Every edge that wants to recede (positive residual)
+        is moved inward by a step that doubles each time, from a quarter of its contact's
+        half-width; edges that do not are held; contacts that vanish detach. Once no edge wants
+        to recede the equilibrium is solved from there (with no contact left: the state without
+        contact, births checked); None when no edge recedes at the start. Without this, solvers
+        chased a contact shrunk to a few thousandths that no longer shrinks but slides along the
+        profile (its trailing edge advancing, its leading edge receding) until their budgets ran
+        out.
+        """
+        x = np.asarray(edges, dtype=float).copy()
+        factor = 0.25
+        moved = False
+        while x.size and factor < 1e4:
+            r = self.eq.residual_at(x, control)
+            if r is None or not np.all(np.isfinite(r)):
+                return None
+            recede = r > 0
+            if not np.any(recede):
+                break
+            moved = True
+            half = np.repeat(0.5 * (x[1::2] - x[0::2]), 2)
+            trial = x + np.where(recede, factor * half, 0.0) * np.tile([1.0, -1.0], len(x) // 2)
+            factor *= 2.0
+            x, changed, _, _ = repair(trial, MIN_WIDTH, MIN_GAP)
+            if changed:
+                factor = 0.25           # a contact detached (or two merged): start again
+        if not moved:
+            return None                 # no edge recedes: not a pull-off
+        out = self.eq.solve(x, control)
+        if out.outcome in (Outcome.CONVERGED, Outcome.NO_CONTACT, Outcome.FULL_CONTACT):
+            self.log.event("contacts released past the fold of their branch"
+                           + (": detached" if out.outcome is Outcome.NO_CONTACT else ""))
+            return out
         return None
 
     # ---- stability under load control ----------------------------------------------------------
