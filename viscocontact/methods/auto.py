@@ -4,7 +4,9 @@ An adhesionless equilibrium is unique and does not depend on the loading path, s
 approach path and no edge energy balance: a uniform-grid spectral solve finds it directly, to a
 stated tolerance. An adhesive scene needs the energy balance at every edge, which only the BEM
 has. When the spectral method cannot reach the requested tolerance on the largest grid it
-allows, the BEM finishes the job seeded with the grid's contact set.
+allows, the BEM finishes the job seeded with the grid's contact set; when the grid solve does not
+converge at all (a very stiff solid at ζ ~ 1, whose trailing-edge layer the grid does not
+resolve), the BEM solves the scene from the caller's start.
 """
 from __future__ import annotations
 
@@ -26,7 +28,8 @@ class Auto(SolutionMethod):
         Relative accuracy of Ã and μ asked of the spectral method.
     finish_with_bem : bool
         When the spectral estimate stays above ``tolerance``, solve again with the BEM from the
-        grid's contact set (the result then comes from the BEM and says so in its events).
+        grid's contact set; when the grid solve does not converge, with the BEM from ``initial``
+        (the result then comes from the BEM and says so in its events).
     max_points : int or None
         Largest grid the spectral method may use (``None``: its default).
     """
@@ -64,6 +67,13 @@ class Auto(SolutionMethod):
         result = method.solve(problem, initial, fields=fields, prepared=prepared)
         events = result.extras.setdefault("events", [])
         events.insert(0, f"method {method.name}: {reason}")
+        if method.name != BEM.name and self.finish_with_bem and not result.converged:
+            # a grid solve that fails says nothing about the contact set: the BEM starts where
+            # the caller asked (its approach path from first touch without a start)
+            finished = BEM().solve(problem, initial, fields=fields, prepared=prepared)
+            finished.extras.setdefault("events", []).insert(
+                0, f"method bem: the {method.name} solve did not converge ({result.message})")
+            return finished
         if (method.name != BEM.name and self.finish_with_bem and result.converged
                 and not result.extras.get("tolerance_met", True)):
             estimate = result.extras.get("error_estimate")

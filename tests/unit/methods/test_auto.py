@@ -50,6 +50,20 @@ def test_the_bem_finishes_what_the_grid_cannot():
     assert grid.error_estimate > 1e-6
 
 
+def test_the_bem_solves_what_the_grid_does_not_converge_on():
+    """A very stiff solid at ζ = 1 (β = 1e4: a trailing-edge layer of ζ/β = 1e-4 that no grid of
+    the default ladder resolves): the active set does not settle, and the BEM solves the scene
+    from first touch instead of the planned method reporting a failure. Its area agrees with the
+    BEM on edge elements of 1e-5 (1.963126) to the BEM's discretisation error."""
+    problem = ContactProblem(profile=Sinusoid(amplitude=0.1), solver=Newton(),
+                             rheology=StandardLinearSolid(beta=1e4), zeta=1.0,
+                             mean_pressure=0.49878, method=Auto())
+    result = problem.solve()
+    assert result.converged and result.method == "bem" and result.n_contacts == 1
+    assert any("spectral solve did not converge" in e for e in result.extras["events"])
+    assert result.area == pytest.approx(1.963126, abs=1e-4)
+
+
 @pytest.mark.parametrize("field, value", [("tolerance", 0.0), ("tolerance", 1.0),
                                           ("max_points", 10), ("finish_with_bem", "yes")])
 def test_bad_options_name_the_field(field, value):
