@@ -882,6 +882,59 @@ def _tabor(scene: "Scene", groups: dict[str, Any]) -> tuple[dict[str, Any], list
     return out, warnings
 
 
+#: Maugis's transition parameter λ above which a scene is JKR-like, below which DMT-like.
+JKR_LIKE, DMT_LIKE = 5.0, 0.1
+
+
+def _regime(value: float) -> str:
+    if value >= JKR_LIKE:
+        return f"JKR-like (λ >= {JKR_LIKE:g})"
+    if value <= DMT_LIKE:
+        return f"DMT-like (λ <= {DMT_LIKE:g})"
+    return f"Maugis transition ({DMT_LIKE:g} < λ < {JKR_LIKE:g})"
+
+
+def _cohesive(scene: "Scene", groups: dict[str, Any]) -> dict[str, Any]:
+    """The Maugis–Dugdale groups (``docs/cohesive.md``): range, strength, zone, λ, μ_T, regime;
+    in SI units too when the physical table gives the scale."""
+    adhesion = scene.adhesion
+    if isinstance(adhesion, ComponentSpec):
+        adhesion = adhesion.resolve("adhesion")
+    gamma, h0, amp, beta = adhesion.gamma, adhesion.range, groups["amplitude"], groups["beta"]
+    if kind_of("profile", scene.profile) == "sinusoid":
+        length, which = amp, "crest radius R = 1/(q0² Λ) of the sinusoid"
+    else:
+        length, which = groups["rms"], ("R = 1/(q0² r_rms) of the equivalent sinusoid "
+                                        "(eq. 4.55), not the crest of the highest asperity")
+    lam = adhesion.transition_parameter(length) if gamma > 0 else 0.0
+    lam_glassy = adhesion.transition_parameter(length, beta) if gamma > 0 else 0.0
+    regime = _regime(lam)
+    if _regime(lam_glassy) != regime:
+        regime += f"; glassy (high ζ): {_regime(lam_glassy)}"
+    out: dict[str, Any] = {
+        "range": h0, "range_ratio": h0 / amp,
+        "cohesive_stress": adhesion.strength(amp), "strength_ratio": math.pi * gamma / h0,
+        "quasi_static_zone": adhesion.quasi_static_zone,
+        "transition": lam, "transition_glassy": lam_glassy, "regime": regime,
+        "tabor": adhesion.tabor(length) if gamma > 0 else 0.0,
+        "tabor_glassy": adhesion.tabor(length, beta) if gamma > 0 else 0.0,
+        "tabor_radius": None, "adhesion_length": None, "equilibrium_distance": None,
+        "cohesive_range": None, "cohesive_strength": None, "quasi_static_zone_length": None,
+        "tabor_note": (f"Maugis–Dugdale: λ = 2σ0 (R/(πE²Δγ))^(1/3), μ_T with Z0 = 16h0/(9√3) "
+                       f"(σ0 the Lennard-Jones maximum), E = E* (glassy: βE*), {which}; "
+                       f"physical.equilibrium_distance is not used"),
+    }
+    phys = scene.physical or {}
+    if {"E0", "wavelength"} <= set(phys):
+        q0 = 2.0 * math.pi / phys["wavelength"]
+        estar = phys["E0"] / (1.0 - scene.poisson**2)
+        out.update(cohesive_range=h0 / q0, cohesive_strength=estar * math.pi * gamma / h0,
+                   quasi_static_zone_length=adhesion.quasi_static_zone / q0,
+                   tabor_radius=1.0 / (q0 * length), adhesion_length=math.pi * gamma / q0,
+                   equilibrium_distance=16.0 / (9.0 * math.sqrt(3.0)) * h0 / q0)
+    return out
+
+
 def dimensionless_groups(scene: "Scene") -> dict[str, Any]:
     """The dimensionless groups of ``scene`` (JSON-ready).
 
@@ -892,6 +945,15 @@ def dimensionless_groups(scene: "Scene") -> dict[str, Any]:
     (``None`` without a physical scale or without adhesion), ``tabor_radius`` (m),
     ``adhesion_length`` (m), ``equilibrium_distance`` (m), ``tabor_note``; ``physical`` (the
     echoed SI table or ``None``) and ``warnings`` (list of strings, e.g. μ_T < 3).
+
+    For adhesion kind ``maugis-dugdale`` (see ``docs/cohesive.md``): ``range`` h̃0,
+    ``range_ratio`` η = h̃0/Λ̃, ``cohesive_stress`` σ̃0 = 2πγ̃/(h̃0Λ̃), ``strength_ratio``
+    σ0/E* = πγ̃/h̃0, ``quasi_static_zone`` q0a0 = h̃0²/(4γ̃), ``transition`` λ and
+    ``transition_glassy`` (E = βE*), ``regime`` (JKR-like for λ >= 5, DMT-like for λ <= 0.1,
+    else the transition), ``tabor``/``tabor_glassy`` with Z0 = 16h0/(9√3) (no physical scale
+    needed); with ``physical.E0`` and ``physical.wavelength`` also ``cohesive_range`` h0 (m),
+    ``cohesive_strength`` σ0 (Pa), ``quasi_static_zone_length`` a0 (m), ``tabor_radius`` (m),
+    ``adhesion_length`` Δγ/E* (m) and ``equilibrium_distance`` Z0 (m).
     """
     stats = scene.profile.statistics()
     amplitude = float(scene.profile.amplitude)
@@ -907,8 +969,12 @@ def dimensionless_groups(scene: "Scene") -> dict[str, Any]:
             groups[name] = _plain(getattr(scene.profile, name))
     if getattr(scene.kernel, "thickness", None) is not None:
         groups["thickness"] = float(scene.kernel.thickness)
-    tabor, warnings = _tabor(scene, groups)
-    groups.update(tabor)
+    if kind_of("adhesion", scene.adhesion) == COHESIVE_KIND:
+        groups.update(_cohesive(scene, groups))  # finite range: no short-range warnings
+        warnings: list[str] = []
+    else:
+        tabor, warnings = _tabor(scene, groups)
+        groups.update(tabor)
     groups["physical"] = dict(scene.physical) if scene.physical is not None else None
     groups["warnings"] = warnings
     return groups

@@ -127,3 +127,75 @@ def test_bad_cohesive_input_names_the_key(label, adhesion, physical, modify, fie
         Scene.from_dict(d)
     assert info.value.field == field, str(info.value)
     assert text in str(info.value), str(info.value)
+
+
+# ---- describe ----------------------------------------------------------------------------------
+def _dimensionless(gamma, h0, amplitude=0.1, profile=None):
+    return {"profile": profile or {"kind": "sinusoid", "amplitude": amplitude},
+            "rheology": {"kind": "standard-linear-solid", "beta": 10.0},
+            "adhesion": {"kind": "maugis-dugdale", "gamma": gamma, "range": h0},
+            "load": {"mean_pressure": 0.05}, "sliding": {"zeta": 0.3}}
+
+
+@pytest.mark.parametrize("lam,regime", [(10.0, "JKR-like"), (1.0, "transition"),
+                                        (0.05, "DMT-like")])
+def test_describe_reports_the_reference_transition_parameters(lam, regime):
+    from viscocontact.groups import dimensionless_groups
+    from viscocontact.reference import MaugisDugdaleWavy
+
+    ref = MaugisDugdaleWavy.from_transition(Gamma=0.05, transition=lam)   # relaxed λ
+    amp = 0.1
+    groups = dimensionless_groups(Scene.from_dict(_dimensionless(0.05 * amp**2, ref.h0 * amp)))
+    assert groups["transition"] == pytest.approx(lam, rel=1e-12)
+    glassy = MaugisDugdaleWavy(Gamma=0.05, h0=ref.h0, modulus_ratio=10.0)
+    assert groups["transition_glassy"] == pytest.approx(glassy.transition_parameter, rel=1e-12)
+    assert groups["tabor"] == pytest.approx(ref.tabor, rel=1e-12)
+    assert groups["tabor_glassy"] == pytest.approx(glassy.tabor, rel=1e-12)
+    assert groups["cohesive_stress"] == pytest.approx(ref.cohesive_stress, rel=1e-12)
+    assert groups["range_ratio"] == pytest.approx(ref.h0, rel=1e-12)
+    assert groups["strength_ratio"] == pytest.approx(math.pi * 0.05 * amp / ref.h0, rel=1e-12)
+    assert groups["quasi_static_zone"] == pytest.approx((ref.h0 * amp) ** 2 / (4 * 5e-4))
+    assert groups["regime"].startswith({"JKR-like": "JKR-like", "transition": "Maugis transition",
+                                        "DMT-like": "DMT-like"}[regime])
+    assert groups["warnings"] == [] and groups["cohesive_range"] is None
+    if lam == 10.0:      # λ∞ = λ/10^(2/3) = 2.15: the glassy limit is in the transition
+        assert "glassy (high ζ): Maugis transition" in groups["regime"]
+
+
+def test_describe_in_physical_units():
+    from viscocontact.groups import dimensionless_groups
+
+    groups = dimensionless_groups(Scene.from_dict(scene_dict({"kind": "maugis-dugdale"},
+                                                             cohesive_strength=1e4)))
+    assert groups["cohesive_strength"] == pytest.approx(1e4, rel=1e-12)
+    assert groups["cohesive_range"] == pytest.approx(DGAMMA / 1e4, rel=1e-12)
+    assert groups["adhesion_length"] == pytest.approx(DGAMMA * (1 - NU**2) / E0, rel=1e-12)
+    assert groups["tabor_radius"] == pytest.approx(1 / (Q0**2 * 0.1 / Q0), rel=1e-12)
+    assert groups["equilibrium_distance"] == pytest.approx(16 / (9 * math.sqrt(3)) * 1e-6)
+    assert groups["quasi_static_zone_length"] == pytest.approx(
+        math.pi * E0 / (1 - NU**2) * DGAMMA / (4 * 1e4**2), rel=1e-12)   # πE*Δγ/(4σ0²)
+
+
+def test_describe_names_the_radius_of_a_rough_profile():
+    from viscocontact.groups import dimensionless_groups
+
+    d = _dimensionless(1e-4, 1e-2, profile={"kind": "self-affine", "hurst": 0.8, "scales": 8,
+                                                 "rms": 0.05})
+    groups = dimensionless_groups(Scene.from_dict(d))
+    assert "eq. 4.55" in groups["tabor_note"]
+    lam = 2 * math.pi ** (1 / 3) * 1e-4 ** (2 / 3) / (1e-2 * groups["rms"] ** (1 / 3))
+    assert groups["transition"] == pytest.approx(lam, rel=1e-12)
+
+
+def test_describe_cli_text(capsys, tmp_path):
+    from viscocontact.cli import main
+    from viscocontact.scene import Scene as _Scene
+
+    path = tmp_path / "md.toml"
+    path.write_text(_Scene.from_dict(scene_dict({"kind": "maugis-dugdale"},
+                                                cohesive_range=1e-6)).to_toml())
+    assert main(["describe", str(path)]) == 0
+    out, err = capsys.readouterr()
+    assert err == ""
+    assert "regime" in out and "Maugis transition" in out and "glassy (high ζ): DMT-like" in out
+    assert "cohesive_strength         10000 Pa" in out and "cohesive_range            1e-06 m" in out
