@@ -162,3 +162,21 @@ def test_friction_identity_converges_with_the_mesh_with_cohesive_zones():
         gaps.append(abs(r.friction / r.extras["friction_dissipation"] - 1))
     assert gaps[2] < 5e-7
     assert gaps[0] / gaps[1] > 5 and gaps[1] / gaps[2] > 5
+
+
+def test_edge_zones_follow_the_moving_dugdale_crack_when_slow():
+    """λ = 10 (a0 = 7.9e-3, 1/400 of the contact), ζ = 1e-3 (v = Vτ/a0 = 0.127): each zone over
+    the relaxed wavy zone (0.99089 a0) against the steady Dugdale crack's a/a0 — trailing edge
+    (opening) 1.2401 against 1.2385, leading (closing) 0.9088 against 0.9054."""
+    from viscocontact.reference.dugdale_crack import speed_group, steady_crack
+
+    ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=10.0)
+    model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
+    r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
+                       adhesion=model, mean_pressure=0.05, solver=Newton(), zeta=1e-3).solve()
+    assert r.converged, r.message
+    elastic = ref.state_at_pressure(0.05).zone_width / model.quasi_static_zone     # 0.99089
+    trailing, leading = r.edge_terms.effective_work / elastic
+    v = speed_group(1e-3, model.gamma, model.range)
+    assert trailing == pytest.approx(steady_crack(v, 10.0, "opening").zone_length, rel=3e-3)
+    assert leading == pytest.approx(steady_crack(v, 10.0, "closing").zone_length, rel=6e-3)

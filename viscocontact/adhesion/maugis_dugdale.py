@@ -176,10 +176,12 @@ class MaugisDugdale(AdhesionModel):
 
     def edge_terms(self, ctx) -> EdgeTerms:
         """Per edge: ``stress_intensity`` the residual's ``K̃`` (≈ 0 at equilibrium);
-        ``effective_work`` the zone length over the quasi-static one, ``d/a0`` — the apparent
-        toughness ``G/Δγ`` of a zone much shorter than the contact (``G = K_app²/(2E*)`` with
-        Dugdale's ``K_app = σ0√(8d/π)``, the field the zone screens; the ratios that
-        :mod:`viscocontact.reference.dugdale_crack` gives for viscoelastic edges); ``stored``
+        ``effective_work`` the zone length over the quasi-static one, ``d/a0`` — at a
+        trailing (opening) edge, the apparent toughness ``G/Δγ`` of a zone much shorter than
+        the contact (``G = K_app²/(2E*)`` with Dugdale's ``K_app = σ0√(8d/π)``); at a leading
+        (closing) edge the far field is ``σ0√(8d/π)·m`` (:mod:`viscocontact.reference.
+        dugdale_crack`), so ``G/Δγ = m²·d/a0`` there and ``d/a0`` is the zone length only
+        (``docs/cohesive.md``, apparent toughness against ζ); ``stored``
         ``= effective_work·target`` and ``nonconservative = target - stored`` (eq. 4.20 split
         as an energy balance would: what the bulk dissipates around the zone per unit advance,
         stored-energy sign)."""
