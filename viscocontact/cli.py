@@ -32,6 +32,12 @@ def _format_value(value) -> str:
     return str(value)
 
 
+#: SI units of the ``describe`` keys that are not dimensionless (text output only).
+_DESCRIBE_UNITS = {"tabor_radius": "m", "adhesion_length": "m", "equilibrium_distance": "m",
+                   "cohesive_range": "m", "cohesive_strength": "Pa",
+                   "quasi_static_zone_length": "m"}
+
+
 def _run_describe(args: argparse.Namespace) -> int:
     """Print the dimensionless groups of a scene (and its Tabor parameter)."""
     from ._json import dumps
@@ -52,7 +58,8 @@ def _run_describe(args: argparse.Namespace) -> int:
     for key, value in groups.items():
         if key in ("physical", "warnings"):
             continue
-        print(f"{key:<{width}}  {_format_value(value)}")
+        unit = f" {_DESCRIBE_UNITS[key]}" if key in _DESCRIBE_UNITS and value is not None else ""
+        print(f"{key:<{width}}  {_format_value(value)}{unit}")
     if groups["physical"]:
         print("physical:")
         for key, value in groups["physical"].items():

@@ -62,7 +62,16 @@ PHYSICAL_KEYS: dict[str, tuple[str, tuple[float | None, float | None, bool], str
     "mean_pressure": ("Pa", (None, None, False), "remote mean pressure p∞ (negative = tensile)"),
     "penetration": ("m", (None, None, False), "penetration Δ"),
     "equilibrium_distance": ("m", (0.0, None, True), "equilibrium distance Z0 (Tabor parameter)"),
+    "cohesive_range": ("m", (0.0, None, True),
+                       "range h0 of the Dugdale cohesive law (adhesion kind 'maugis-dugdale')"),
+    "cohesive_strength": ("Pa", (0.0, None, True),
+                          "cohesive strength σ0 = Δγ/h0 (adhesion kind 'maugis-dugdale')"),
 }
+#: The ``[physical]`` keys that give the range of the Maugis–Dugdale law (exclusive).
+COHESIVE_KEYS = ("cohesive_range", "cohesive_strength")
+COHESIVE_KIND = "maugis-dugdale"
+#: Upper bound of ``MaugisDugdale.range`` (h̃0 = q0·h0 in (0, RANGE_MAX]).
+RANGE_MAX = 10.0
 
 # (section, key) <- (physical sources, physical keys also needed)
 _TARGETS: dict[tuple[str, str], tuple[tuple[str, ...], tuple[str, ...]]] = {
@@ -366,6 +375,10 @@ def _check_physical(inst, attribute, value):
             raise ValidationError(f"physical.{key}", v, f"one of {list(PHYSICAL_KEYS)}")
         lo, hi, lo_open = PHYSICAL_KEYS[key][1]
         _check_number(f"physical.{key}", v, lo=lo, hi=hi, lo_open=lo_open)
+    if all(k in value for k in COHESIVE_KEYS):
+        raise ValidationError("physical.cohesive_strength", value["cohesive_strength"],
+                              "no value when physical.cohesive_range is given (the range h0 and "
+                              "the strength σ0 = Δγ/h0 fix the same adhesion.range: give one)")
 
 
 @attrs.frozen(kw_only=True)
@@ -475,7 +488,8 @@ class Scene:
                                   f"to agree with physical.poisson = {phys['poisson']!r}")
         for section in ("profile", "kernel", "adhesion", "load", "sliding"):
             targets = physical_targets(section, phys, self.poisson,
-                                       amplitude=lambda: self.profile.amplitude)
+                                       amplitude=lambda: self.profile.amplitude,
+                                       gamma=_param(self.adhesion, "gamma"))
             for key, (value, source) in targets.items():
                 if section == "adhesion" and not self.adhesive:
                     raise _none_adhesion(phys)
@@ -513,6 +527,8 @@ class Scene:
         out: dict[str, Any] = {"poisson": self.poisson}
         for section in COMPONENT_SECTIONS:
             out[section] = dump_component(section, getattr(self, section))
+        if self.physical is not None and any(k in self.physical for k in COHESIVE_KEYS):
+            out["adhesion"].pop("range", None)  # given by the physical table (exclusive)
         out["load"] = {self.load.controlled: self.load.value}
         out["sliding"] = {"zeta": self.zeta}
         if self.physical is not None:
@@ -538,12 +554,14 @@ class Scene:
 # ---------------------------------------------------------------------------------------------
 # the physical boundary
 def physical_targets(section: str, physical: Mapping[str, float], poisson: float,
-                     amplitude=None) -> dict[str, tuple[float, str]]:
+                     amplitude=None, gamma: Any = None) -> dict[str, tuple[float, str]]:
     """Dimensionless values of ``section`` implied by the physical table.
 
     Returns ``{key: (value, "physical.source")}``. ``amplitude`` is a callable returning the built
     profile's Λ̃ = q0·max r (needed for the load). Raises :class:`ValidationError` naming the
-    missing physical key when a conversion lacks an input (e.g. ``physical.E0``).
+    missing physical key when a conversion lacks an input (e.g. ``physical.E0``). ``gamma`` is
+    the adhesion table's γ̃ (used by ``physical.cohesive_strength`` when
+    ``physical.work_of_adhesion`` is absent).
     """
     out: dict[str, tuple[float, str]] = {}
     one_minus_nu2 = 1.0 - poisson**2
@@ -571,7 +589,43 @@ def physical_targets(section: str, physical: Mapping[str, float], poisson: float
         else:  # zeta
             value = q0 * P["velocity"] * P["tau"]
         out[key] = (float(value), " and ".join(f"physical.{s}" for s in sources))
+    if section == "adhesion" and any(k in physical for k in COHESIVE_KEYS):
+        given = out["gamma"][0] if "gamma" in out else gamma
+        out["range"] = _cohesive_range(physical, one_minus_nu2, given)
     return out
+
+
+def _cohesive_range(physical: Mapping[str, float], one_minus_nu2: float,
+                    gamma: Any) -> tuple[float, str]:
+    """``adhesion.range`` h̃0 from ``physical.cohesive_range`` (``q0·h0``) or
+    ``physical.cohesive_strength`` (``h0 = Δγ/σ0``, i.e. ``h̃0 = πγ̃E*/σ0`` from
+    ``σ0/E* = πγ̃/h̃0``), checked against ``(0, RANGE_MAX]``."""
+    key = "cohesive_range" if "cohesive_range" in physical else "cohesive_strength"
+    value = physical[key]
+    if key == "cohesive_range":
+        if "wavelength" not in physical:
+            raise ValidationError("physical.wavelength", None,
+                                  "a value (fundamental wavelength λ0, m): needed to convert "
+                                  "physical.cohesive_range into adhesion.range")
+        q0 = 2.0 * math.pi / physical["wavelength"]
+        h0 = q0 * value
+        allowed = f"a range h0 in (0, {RANGE_MAX / q0:.6g}] m (h̃0 = q0·h0 in (0, {RANGE_MAX:g}])"
+    else:
+        if "E0" not in physical:
+            raise ValidationError("physical.E0", None,
+                                  "a value (relaxed Young modulus E0, Pa): needed to convert "
+                                  "physical.cohesive_strength into adhesion.range")
+        if not _is_number(gamma) or not float(gamma) > 0.0:
+            raise ValidationError("physical.cohesive_strength", value,
+                                  "a work of adhesion > 0 with it (physical.work_of_adhesion or "
+                                  f"adhesion.gamma; got {gamma!r}): h0 = Δγ/σ0")
+        estar = physical["E0"] / one_minus_nu2
+        h0 = math.pi * float(gamma) * estar / value
+        allowed = (f"a strength σ0 >= {math.pi * float(gamma) * estar / RANGE_MAX:.6g} Pa "
+                   f"(h̃0 = πγ̃E*/σ0 in (0, {RANGE_MAX:g}])")
+    if not (math.isfinite(h0) and 0.0 < h0 <= RANGE_MAX):
+        raise ValidationError(f"physical.{key}", value, allowed)
+    return float(h0), f"physical.{key}"
 
 
 def _disagree(section, key, current, value, source, phys):
@@ -589,9 +643,25 @@ def _no_target(section, key, kind, source, phys, component):
 
 
 def _none_adhesion(phys):
-    return ValidationError("physical.work_of_adhesion", phys["work_of_adhesion"],
-                           "no work of adhesion when adhesion.kind = 'none' "
-                           "(use kind = 'energy-balance')")
+    key = next((k for k in ("work_of_adhesion", *COHESIVE_KEYS) if k in phys), "work_of_adhesion")
+    use = "'maugis-dugdale'" if key in COHESIVE_KEYS else "'energy-balance' or 'maugis-dugdale'"
+    return ValidationError(f"physical.{key}", phys.get(key),
+                           f"no value when adhesion.kind = 'none' (use kind = {use})")
+
+
+def _check_cohesive(phys: Mapping[str, float], kind: Any, params: Mapping[str, Any]) -> None:
+    """``physical.cohesive_range``/``cohesive_strength`` only with adhesion kind
+    'maugis-dugdale', and never together with an explicit ``adhesion.range``."""
+    key = next((k for k in COHESIVE_KEYS if k in phys), None)
+    if key is None:
+        return
+    if kind != COHESIVE_KIND:
+        raise ValidationError(f"physical.{key}", phys[key],
+                              f"adhesion kind {COHESIVE_KIND!r} with it (the Dugdale law's "
+                              f"range; adhesion kind {kind!r} has none)")
+    if "range" in params:
+        raise ValidationError("adhesion.range", params["range"],
+                              f"no value when physical.{key} is given (it fixes adhesion.range)")
 
 
 def _fill(section: str, params: dict[str, Any], targets: dict[str, tuple[float, str]],
@@ -677,7 +747,8 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
         kernel_table = {"kind": DEFAULT_KERNEL}
     adhesion_table = tables["adhesion"]
     if adhesion_table is None:
-        adhesion_table = {"kind": "energy-balance" if "work_of_adhesion" in phys else "none"}
+        adhesion_table = {"kind": COHESIVE_KIND if any(k in phys for k in COHESIVE_KEYS)
+                          else "energy-balance" if "work_of_adhesion" in phys else "none"}
     solver_table = tables["solver"]
     nu = _resolve_poisson(data, phys, kernel_table)
 
@@ -697,9 +768,10 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
 
     params = adhesion_table
     kind, fields = _kind_class("adhesion", params)
-    targets = physical_targets("adhesion", phys, nu)
-    if targets and kind == "none":
+    if kind == "none" and any(k in phys for k in ("work_of_adhesion", *COHESIVE_KEYS)):
         raise _none_adhesion(phys)
+    _check_cohesive(phys, kind, params)
+    targets = physical_targets("adhesion", phys, nu, gamma=params.get("gamma"))
     _fill("adhesion", params, targets, phys, fields, kind)
     adhesion = build_component("adhesion", params, lazy=True)
 
@@ -810,6 +882,59 @@ def _tabor(scene: "Scene", groups: dict[str, Any]) -> tuple[dict[str, Any], list
     return out, warnings
 
 
+#: Maugis's transition parameter λ above which a scene is JKR-like, below which DMT-like.
+JKR_LIKE, DMT_LIKE = 5.0, 0.1
+
+
+def _regime(value: float) -> str:
+    if value >= JKR_LIKE:
+        return f"JKR-like (λ >= {JKR_LIKE:g})"
+    if value <= DMT_LIKE:
+        return f"DMT-like (λ <= {DMT_LIKE:g})"
+    return f"Maugis transition ({DMT_LIKE:g} < λ < {JKR_LIKE:g})"
+
+
+def _cohesive(scene: "Scene", groups: dict[str, Any]) -> dict[str, Any]:
+    """The Maugis–Dugdale groups (``docs/cohesive.md``): range, strength, zone, λ, μ_T, regime;
+    in SI units too when the physical table gives the scale."""
+    adhesion = scene.adhesion
+    if isinstance(adhesion, ComponentSpec):
+        adhesion = adhesion.resolve("adhesion")
+    gamma, h0, amp, beta = adhesion.gamma, adhesion.range, groups["amplitude"], groups["beta"]
+    if kind_of("profile", scene.profile) == "sinusoid":
+        length, which = amp, "crest radius R = 1/(q0² Λ) of the sinusoid"
+    else:
+        length, which = groups["rms"], ("R = 1/(q0² r_rms) of the equivalent sinusoid "
+                                        "(eq. 4.55), not the crest of the highest asperity")
+    lam = adhesion.transition_parameter(length) if gamma > 0 else 0.0
+    lam_glassy = adhesion.transition_parameter(length, beta) if gamma > 0 else 0.0
+    regime = _regime(lam)
+    if _regime(lam_glassy) != regime:
+        regime += f"; glassy (high ζ): {_regime(lam_glassy)}"
+    out: dict[str, Any] = {
+        "range": h0, "range_ratio": h0 / amp,
+        "cohesive_stress": adhesion.strength(amp), "strength_ratio": math.pi * gamma / h0,
+        "quasi_static_zone": adhesion.quasi_static_zone,
+        "transition": lam, "transition_glassy": lam_glassy, "regime": regime,
+        "tabor": adhesion.tabor(length) if gamma > 0 else 0.0,
+        "tabor_glassy": adhesion.tabor(length, beta) if gamma > 0 else 0.0,
+        "tabor_radius": None, "adhesion_length": None, "equilibrium_distance": None,
+        "cohesive_range": None, "cohesive_strength": None, "quasi_static_zone_length": None,
+        "tabor_note": (f"Maugis–Dugdale: λ = 2σ0 (R/(πE²Δγ))^(1/3), μ_T with Z0 = 16h0/(9√3) "
+                       f"(σ0 the Lennard-Jones maximum), E = E* (glassy: βE*), {which}; "
+                       f"physical.equilibrium_distance is not used"),
+    }
+    phys = scene.physical or {}
+    if {"E0", "wavelength"} <= set(phys):
+        q0 = 2.0 * math.pi / phys["wavelength"]
+        estar = phys["E0"] / (1.0 - scene.poisson**2)
+        out.update(cohesive_range=h0 / q0, cohesive_strength=estar * math.pi * gamma / h0,
+                   quasi_static_zone_length=adhesion.quasi_static_zone / q0,
+                   tabor_radius=1.0 / (q0 * length), adhesion_length=math.pi * gamma / q0,
+                   equilibrium_distance=16.0 / (9.0 * math.sqrt(3.0)) * h0 / q0)
+    return out
+
+
 def dimensionless_groups(scene: "Scene") -> dict[str, Any]:
     """The dimensionless groups of ``scene`` (JSON-ready).
 
@@ -820,6 +945,15 @@ def dimensionless_groups(scene: "Scene") -> dict[str, Any]:
     (``None`` without a physical scale or without adhesion), ``tabor_radius`` (m),
     ``adhesion_length`` (m), ``equilibrium_distance`` (m), ``tabor_note``; ``physical`` (the
     echoed SI table or ``None``) and ``warnings`` (list of strings, e.g. μ_T < 3).
+
+    For adhesion kind ``maugis-dugdale`` (see ``docs/cohesive.md``): ``range`` h̃0,
+    ``range_ratio`` η = h̃0/Λ̃, ``cohesive_stress`` σ̃0 = 2πγ̃/(h̃0Λ̃), ``strength_ratio``
+    σ0/E* = πγ̃/h̃0, ``quasi_static_zone`` q0a0 = h̃0²/(4γ̃), ``transition`` λ and
+    ``transition_glassy`` (E = βE*), ``regime`` (JKR-like for λ >= 5, DMT-like for λ <= 0.1,
+    else the transition), ``tabor``/``tabor_glassy`` with Z0 = 16h0/(9√3) (no physical scale
+    needed); with ``physical.E0`` and ``physical.wavelength`` also ``cohesive_range`` h0 (m),
+    ``cohesive_strength`` σ0 (Pa), ``quasi_static_zone_length`` a0 (m), ``tabor_radius`` (m),
+    ``adhesion_length`` Δγ/E* (m) and ``equilibrium_distance`` Z0 (m).
     """
     stats = scene.profile.statistics()
     amplitude = float(scene.profile.amplitude)
@@ -835,8 +969,12 @@ def dimensionless_groups(scene: "Scene") -> dict[str, Any]:
             groups[name] = _plain(getattr(scene.profile, name))
     if getattr(scene.kernel, "thickness", None) is not None:
         groups["thickness"] = float(scene.kernel.thickness)
-    tabor, warnings = _tabor(scene, groups)
-    groups.update(tabor)
+    if kind_of("adhesion", scene.adhesion) == COHESIVE_KIND:
+        groups.update(_cohesive(scene, groups))  # finite range: no short-range warnings
+        warnings: list[str] = []
+    else:
+        tabor, warnings = _tabor(scene, groups)
+        groups.update(tabor)
     groups["physical"] = dict(scene.physical) if scene.physical is not None else None
     groups["warnings"] = warnings
     return groups

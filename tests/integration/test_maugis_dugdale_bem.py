@@ -92,3 +92,91 @@ def test_viscoelastic_limits_are_the_elastic_solutions(zeta, beta_ref):
     exact = MaugisDugdaleWavy(Gamma=GAMMA, h0=ref.h0, modulus_ratio=beta_ref)
     assert r.converged, r.message
     assert abs(r.area / exact.state_at_pressure(0.05).area - 1) < 1e-3
+
+
+# ---- viscoelastic: friction (eq. 4.16) against the dissipated power ------------------------------
+def _viscoelastic(zeta, p, lam=5.0, **disc):
+    ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=lam)
+    model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
+    prob = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
+                          adhesion=model, mean_pressure=p, solver=Newton(), zeta=zeta,
+                          discretization=Discretization(**disc))
+    prep = prob.prepare()
+    return prob, prep, prob.solve(prepared=prep)
+
+
+def _zone_fields(prob, prep, r):
+    from viscocontact.contact.mesh import build_mesh
+    from viscocontact.methods.bem.meshing import mesh_spec
+
+    mesh = build_mesh(r.edges.ravel(), mesh_spec(prob.discretization, prep.kernel, prob.adhesion))
+    return mesh, prob.adhesion.field_solution(mesh, prep.kernel, prep.shape,
+                                              {"mean_pressure": prob.mean_pressure})
+
+
+@pytest.mark.parametrize("zeta, p, measured", [(3.0, 0.05, 2.0e-6), (3.0, 0.2, 2.7e-6),
+                                                (10.0, 0.05, 4.9e-7)])
+def test_friction_is_the_dissipated_power_with_cohesive_zones(zeta, p, measured):
+    """β = 10, λ = 5: eq. 4.16 (u' = r' in contact, the profile's slope under the zones) against
+    ∫σ̃ũ' over contact and zones from the kernel's dissipative part; 64 elements."""
+    prob, prep, r = _viscoelastic(zeta, p)
+    assert r.converged, r.message
+    assert r.friction > 0.05                       # substantial: μ = 0.25, 0.11, 0.055
+    gap = abs(r.friction / r.extras["friction_dissipation"] - 1)
+    assert gap < 2 * measured
+
+
+def test_dissipated_power_against_a_fourier_sum_and_the_zone_cancellation():
+    """The exact real-space form against 4π Σ|σ̂_m|² Im K(m) (σ̂ of contact and zone stresses),
+    and the claim of ``contact.fields.friction``: σ̃0·(u' - r') over the two zones of a contact
+    cancels (the gap runs from 0 to η at both), so the profile's slope may stand for u'."""
+    prob, prep, r = _viscoelastic(3.0, 0.05)
+    mesh, f = _zone_fields(prob, prep, r)
+    assert f.mean_pressure == pytest.approx(0.05, abs=1e-12)
+    left = np.concatenate([mesh.left, f.loads.left])
+    right = np.concatenate([mesh.right, f.loads.right])
+    sig = np.concatenate([f.sigma, f.loads.stress])
+    m = np.arange(1, 100_001, dtype=float)
+    sig_hat = (np.exp(-1j * np.outer(m, left)) - np.exp(-1j * np.outer(m, right))) @ sig
+    sig_hat /= 2j * np.pi * m
+    power = 4 * np.pi * np.sum(np.abs(sig_hat) ** 2 * prep.kernel.multiplier(m).imag)
+    fourier = AMP * power / (2 * np.pi * 0.05)
+    assert r.extras["friction_dissipation"] == pytest.approx(fourier, rel=1e-8)   # 2e-9 measured
+    # zone work with u' and with r': they differ by σ̃0 (g̃(c) - g̃(X)) per zone, summing to ~0
+    u = lambda x: f.displacement(prep.kernel, x)
+    heights = prep.shape.profile.heights
+    with_u = AMP * f.loads.stress @ (u(f.loads.right) - u(f.loads.left))
+    with_r = f.loads.stress @ (heights(f.loads.right) - heights(f.loads.left))
+    per_zone = f.loads.stress[0] * prob.adhesion.opening(AMP) * AMP       # σ̃0·η·Λ̃
+    assert abs(with_u - with_r) < 1e-5 * per_zone                          # 2e-6 measured
+    assert with_r > 0.15 * r.friction * 2 * np.pi * 0.05                   # zones: 19 % of it
+
+
+def test_friction_identity_converges_with_the_mesh_with_cohesive_zones():
+    """|μ_4.16/μ_dissipation - 1| at 32, 64, 128 elements: 2.8e-5, 2.0e-6, 1.8e-7 (ζ = 3,
+    p̃∞ = 0.05); the edge zones are the same, the contact interior is refined."""
+    gaps = []
+    for n in (32, 64, 128):
+        _, _, r = _viscoelastic(3.0, 0.05, elements=n)
+        assert r.converged, r.message
+        gaps.append(abs(r.friction / r.extras["friction_dissipation"] - 1))
+    assert gaps[2] < 5e-7
+    assert gaps[0] / gaps[1] > 5 and gaps[1] / gaps[2] > 5
+
+
+def test_edge_zones_follow_the_moving_dugdale_crack_when_slow():
+    """λ = 10 (a0 = 7.9e-3, 1/400 of the contact), ζ = 1e-3 (v = Vτ/a0 = 0.127): each zone over
+    the relaxed wavy zone (0.99089 a0) against the steady Dugdale crack's a/a0 — trailing edge
+    (opening) 1.2401 against 1.2385, leading (closing) 0.9088 against 0.9054."""
+    from viscocontact.reference.dugdale_crack import speed_group, steady_crack
+
+    ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=10.0)
+    model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
+    r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
+                       adhesion=model, mean_pressure=0.05, solver=Newton(), zeta=1e-3).solve()
+    assert r.converged, r.message
+    elastic = ref.state_at_pressure(0.05).zone_width / model.quasi_static_zone     # 0.99089
+    trailing, leading = r.edge_terms.effective_work / elastic
+    v = speed_group(1e-3, model.gamma, model.range)
+    assert trailing == pytest.approx(steady_crack(v, 10.0, "opening").zone_length, rel=3e-3)
+    assert leading == pytest.approx(steady_crack(v, 10.0, "closing").zone_length, rel=6e-3)

@@ -73,6 +73,21 @@ class MaugisDugdale(AdhesionModel):
         """``η = h̃0/Λ̃``: the gap at the zone tips, in units of the amplitude."""
         return self.range / amplitude
 
+    def transition_parameter(self, length: float, modulus_ratio: float = 1.0) -> float:
+        """Maugis's ``λ = 2σ0 (R/(πE²Δγ))^{1/3} = 2π^{1/3}γ̃^{2/3}/(h̃0 L̃^{1/3} β^{2/3})`` for
+        the crest radius ``R = 1/(q0²L)`` (``L̃ = q0L``: the amplitude Λ̃ of a sinusoid, as
+        :attr:`~viscocontact.reference.MaugisDugdaleWavy.transition_parameter`) and the modulus
+        ``E = βE*``; JKR-like for λ → ∞, DMT-like (rigid) for λ → 0."""
+        return (2.0 * np.pi ** (1 / 3) * (self.gamma / modulus_ratio) ** (2 / 3)
+                / (self.range * length ** (1 / 3)))
+
+    def tabor(self, length: float, modulus_ratio: float = 1.0) -> float:
+        """The Tabor parameter ``μ_T = (RΔγ²/(E²Z0³))^{1/3} = (π²γ̃²/(β²L̃))^{1/3}/(q0Z0)`` with
+        Maugis's ``Z0 = 16h0/(9√3)`` (σ0 the Lennard-Jones maximum stress) and ``R`` as in
+        :meth:`transition_parameter`; ``λ ≈ 1.401 μ_T``."""
+        z0 = 16.0 / (9.0 * np.sqrt(3.0)) * self.range
+        return (np.pi**2 * (self.gamma / modulus_ratio) ** 2 / length) ** (1 / 3) / z0
+
     @property
     def quasi_static_zone(self) -> float:
         """``q0a0 = h̃0²/(4γ̃)``: the zone of an elastic (relaxed) edge much wider than it
@@ -161,10 +176,12 @@ class MaugisDugdale(AdhesionModel):
 
     def edge_terms(self, ctx) -> EdgeTerms:
         """Per edge: ``stress_intensity`` the residual's ``K̃`` (≈ 0 at equilibrium);
-        ``effective_work`` the zone length over the quasi-static one, ``d/a0`` — the apparent
-        toughness ``G/Δγ`` of a zone much shorter than the contact (``G = K_app²/(2E*)`` with
-        Dugdale's ``K_app = σ0√(8d/π)``, the field the zone screens; the ratios that
-        :mod:`viscocontact.reference.dugdale_crack` gives for viscoelastic edges); ``stored``
+        ``effective_work`` the zone length over the quasi-static one, ``d/a0`` — at a
+        trailing (opening) edge, the apparent toughness ``G/Δγ`` of a zone much shorter than
+        the contact (``G = K_app²/(2E*)`` with Dugdale's ``K_app = σ0√(8d/π)``); at a leading
+        (closing) edge the far field is ``σ0√(8d/π)·m`` (:mod:`viscocontact.reference.
+        dugdale_crack`), so ``G/Δγ = m²·d/a0`` there and ``d/a0`` is the zone length only
+        (``docs/cohesive.md``, apparent toughness against ζ); ``stored``
         ``= effective_work·target`` and ``nonconservative = target - stored`` (eq. 4.20 split
         as an energy balance would: what the bulk dissipates around the zone per unit advance,
         stored-energy sign)."""

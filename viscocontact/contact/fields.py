@@ -261,3 +261,50 @@ def friction(mesh: Mesh, sigma: np.ndarray, shape: NormalizedProfile, mean_press
     if not abs(mean_pressure) > 1e-12 * load_scale:
         return float("nan")
     return float(work / (2 * np.pi * mean_pressure))
+
+
+#: Most interval end points for which :func:`dissipated_friction` is computed (its cost is
+#: ``n²/2`` evaluations of the kernel's dissipative part: about 0.7 s at this size).
+DISSIPATION_MAX_NODES = 2048
+
+
+def dissipated_friction(kernel, mesh: Mesh, sigma: np.ndarray, amplitude: float,
+                        mean_pressure: float, loads: KnownLoads | None = None,
+                        chunk: int = 256) -> float:
+    """``μ`` from the power fed into the solid, ``(Λ̃/2πp̃∞) ∫ σ̃ ũ' dx̃``, over the contact
+    elements and the known loads (cohesive zones, where ``ũ'`` is not the profile's slope).
+
+    Independent of eq. 4.16 (:func:`friction`), which takes ``u' = r'`` in contact (true at the
+    collocation points only) and ``r'`` on the zones. For a piecewise-constant stress with jumps
+    ``c_i`` (stress on the left of node ``x_i`` less the stress on its right) it is exact:
+    ``∫ σ̃ ũ' = -(1/2) Σ_ij c_i c_j E(x_i - x_j)`` with ``E(x) = F̃(x) + F̃(-x)``
+    (:meth:`~viscocontact.kernels.prepared.PreparedKernel.even_antiderivative`), the
+    non-reciprocal part of the kernel; the elastic part does no work over a period. 0 for a
+    kernel without a dissipative branch; NaN when the mean pressure vanishes to round-off (as
+    :func:`friction`) or beyond :data:`DISSIPATION_MAX_NODES` end points.
+    """
+    left, right, stress = mesh.left, mesh.right, np.asarray(sigma, float)
+    if loads is not None and loads.stress.size:
+        left = np.concatenate([left, loads.left])
+        right = np.concatenate([right, loads.right])
+        stress = np.concatenate([stress, loads.stress])
+    load_scale = float(np.sum(np.abs((right - left) * stress))) / (2 * np.pi)
+    if not abs(mean_pressure) > 1e-12 * load_scale:
+        return float("nan")
+    if len(getattr(kernel, "weights", ())) == 0 and getattr(kernel, "correction", None) is None:
+        return 0.0
+    nodes, inverse = np.unique(np.concatenate([left, right]), return_inverse=True)
+    if nodes.size > DISSIPATION_MAX_NODES:
+        return float("nan")
+    jumps = np.zeros(nodes.size)
+    np.add.at(jumps, inverse[:left.size], -stress)     # the stress starts at a left end
+    np.add.at(jumps, inverse[left.size:], stress)      # and stops at a right end
+    total = 0.0                                        # Σ_{i<j} c_i c_j E(x_i - x_j)
+    for i0 in range(0, nodes.size, chunk):
+        rows = slice(i0, min(i0 + chunk, nodes.size))
+        cols = slice(i0 + 1, nodes.size)
+        block = kernel.even_antiderivative(nodes[rows, None] - nodes[None, cols])
+        upper = np.arange(rows.start, rows.stop)[:, None] < np.arange(cols.start, cols.stop)
+        total += float(jumps[rows] @ np.where(upper, block, 0.0) @ jumps[cols])
+    work = -total                                      # -(1/2)·2·Σ_{i<j}; E(0) = 0
+    return float(amplitude * work / (2 * np.pi * mean_pressure))

@@ -16,7 +16,7 @@ import collections
 import json
 import threading
 import time
-from typing import Any, Mapping
+from typing import Any, Iterable, Mapping
 
 import attrs
 import numpy as np
@@ -57,6 +57,11 @@ ERROR = "error"
 PointTimeout = TimeLimitExceeded
 
 
+def _as_tuple(values: Iterable[float]) -> tuple:
+    """A typed ``tuple`` converter (mypy reads a bare ``tuple`` as ``Iterable[_T_co]``)."""
+    return tuple(values)
+
+
 @attrs.frozen(kw_only=True)
 class PointSpec:
     """What a point needs besides its scene.
@@ -90,7 +95,7 @@ class PointSpec:
     fields: bool = False
     discretization: Mapping[str, Any] | None = None
     labels: Mapping[str, Any] = attrs.field(factory=dict)
-    path: tuple = attrs.field(default=(), converter=tuple)
+    path: tuple = attrs.field(default=(), converter=_as_tuple)
 
 
 def solve_point(scene: Mapping[str, Any], spec: PointSpec,

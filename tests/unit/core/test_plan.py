@@ -175,3 +175,56 @@ def test_plan_reports_the_scaled_tolerance():
     assert "× 10 (stiffness" in str(glassy.plan())
     relaxed = attrs.evolve(glassy, zeta=0.0)
     assert "stiffness" not in str(relaxed.plan())
+
+
+# ---- Maugis–Dugdale zones -----------------------------------------------------------------------
+def _md_plan(gamma, h0, rheology=None, zeta=1.0, **kw):
+    from viscocontact.adhesion.maugis_dugdale import MaugisDugdale
+
+    problem = _problem(adhesion=MaugisDugdale(gamma=gamma, range=h0), zeta=zeta,
+                       **({"rheology": rheology} if rheology is not None else {}), **kw)
+    return {s.stage: s for s in problem.plan().steps}
+
+
+def test_plan_of_resolved_cohesive_zones():
+    from viscocontact.reference.dugdale_crack import speed_group, steady_crack
+
+    plan = _md_plan(5e-4, 0.00795, zeta=0.3)   # λ = 5, β = 10
+    edges = plan["edges"]
+    assert "Maugis-Dugdale zones" in edges.choice and "zones resolved" in edges.choice
+    assert "smallest element is 0.000198" in edges.reason        # 0.1·a0/16, a0 = h̃0²/(4γ̃)
+    a0 = 0.00795**2 / 2e-3
+    lead = steady_crack(speed_group(0.3, 5e-4, 0.00795), 10.0, "closing").zone_length * a0
+    assert f"leading {lead:.3g}" in edges.reason
+    assert "cohesive zone" in plan["mesh"].reason and "inner zone" in plan["reuse"].choice
+    elastic = _md_plan(5e-4, 0.00795, rheology=Elastic(), zeta=0.0)["edges"]
+    assert f"shortest zone ≈ {a0:.3g} spans 160 smallest" in elastic.choice
+
+
+def test_plan_says_when_the_zone_is_below_the_smallest_element():
+    plan = _md_plan(2.4e-7, 1e-7, rheology=Elastic(), zeta=0.0)  # a0 = 1e-8, elements >= 1e-6
+    edges = plan["edges"]
+    assert "not resolved" in edges.choice and "energy-balance" in edges.choice
+    assert "smallest element is 1e-06" in edges.reason
+
+
+def test_plan_of_cohesive_zones_without_edge_zones():
+    from viscocontact.methods.bem import Discretization
+
+    plan = _md_plan(5e-4, 0.00398, rheology=Elastic(), zeta=0.0,   # λ = 10: a0 = 0.0079
+                    discretization=Discretization(edge_resolution=None))
+    assert "no edge zones" in plan["mesh"].choice
+    assert "eq. 4.22" in plan["edges"].reason and "partly resolved" in plan["edges"].choice
+
+
+def test_cli_explain_of_a_maugis_dugdale_scene(tmp_path, capsys):
+    from viscocontact.cli import main
+
+    scene = tmp_path / "md.toml"
+    scene.write_text('[profile]\nkind = "sinusoid"\namplitude = 0.1\n[rheology]\n'
+                     'kind = "standard-linear-solid"\nbeta = 10.0\n[load]\nmean_pressure = 0.05\n'
+                     '[sliding]\nzeta = 0.3\n[adhesion]\nkind = "maugis-dugdale"\n'
+                     'gamma = 2.4e-7\nrange = 1e-7\n', encoding="utf-8")
+    assert main(["solve", str(scene), "--explain"]) == 0
+    text = capsys.readouterr().out
+    assert "Maugis-Dugdale zones" in text and "not resolved" in text and "area" not in text

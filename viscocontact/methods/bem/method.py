@@ -17,7 +17,7 @@ from typing import ClassVar
 import attrs
 import numpy as np
 
-from ...contact.fields import friction
+from ...contact.fields import dissipated_friction, friction
 from ...result import ContactResult, SolveStatus
 from ..base import SolutionMethod
 from .checks import Checks
@@ -109,7 +109,8 @@ class Solve:
         adh = p.adhesion
         dx = float(adh.edge_advance())
         extras = {"events": list(log.events), "residual_history": list(log.history),
-                  "seconds": elapsed, "method": BEM.name, "error_estimate": float("nan")}
+                  "seconds": elapsed, "method": BEM.name, "error_estimate": float("nan"),
+                  "friction_dissipation": float("nan")}
         common = dict(iterations=log.iterations, function_evaluations=log.evaluations,
                       zeta=p.zeta, edge_perturbation=dx, extras=extras)
         kind = out.outcome
@@ -119,6 +120,8 @@ class Solve:
             area = float(np.sum(mesh.width))
             pm = fields.mean_pressure
             mu = friction(mesh, fields.sigma, self.prep.shape, pm, fields.loads)
+            extras["friction_dissipation"] = dissipated_friction(
+                self.prep.kernel, mesh, fields.sigma, self.prep.shape.amplitude, pm, fields.loads)
             converged = kind is Outcome.CONVERGED
             terms = adh.edge_terms(out.ctx) if converged else None
             _, gap = self.checks.gap_outside(fields)

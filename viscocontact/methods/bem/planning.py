@@ -27,13 +27,85 @@ def _mesh_step(problem, spec, kernel) -> PlanStep:
     aligned = (" aligned with δX" if spec.advance and spec.advance <= ALIGN_MAX * spec.smallest
                else "")
     return PlanStep(stage="mesh",
-                    choice=f"{base} + edge zones from h0 = {spec.smallest:.3g}{aligned}, "
+                    choice=f"{base} + edge zones from an edge element of {spec.smallest:.3g}{aligned}, "
                            f"grading {spec.grading:g}",
-                    reason="resolve the memory length and the edge advance next to every edge")
+                    reason="resolve the memory length and the edge advance next to every edge"
+                    + (" (here: a sixteenth of the quasi-static cohesive zone h̃0²/(4γ̃) "
+                       f"= {problem.adhesion.quasi_static_zone:.3g}, or the memory length)"
+                       if _cohesive(problem.adhesion) else ""))
 
 
-def _edge_step(problem) -> PlanStep:
+#: A cohesive zone spanning fewer smallest elements than this is only partly resolved (the
+#: stress-intensity fit of an edge uses the eight elements next to it).
+ZONE_ELEMENTS = 8
+
+
+def cohesive_zones(adhesion, rheology, zeta: float) -> tuple[float, str]:
+    """The shortest zone expected at an edge, ``q0·d``, and how it was estimated.
+
+    A standard linear solid: the steady Dugdale crack of
+    :mod:`viscocontact.reference.dugdale_crack` at the speed group ``v = 4ζγ̃/h̃0²``, at the
+    leading (closing) and trailing (opening) edge, for a zone much shorter than the contact;
+    another viscoelastic rheology: ``a0/2``, the lower bound of those zones; elastic: the
+    quasi-static zone ``a0 = h̃0²/(4γ̃)`` (relaxed modulus; ``a0/β`` for a modulus β)."""
+    from ...reference.dugdale_crack import speed_group, steady_crack
+    from ...rheology.sls import StandardLinearSolid
+
+    a0 = adhesion.quasi_static_zone
+    beta = float(rheology.modulus_ratio)
+    if beta == 1.0 or zeta == 0.0:
+        modulus = float(getattr(rheology, "modulus", 1.0))
+        return a0 / modulus, "quasi-static zone h̃0²/(4γ̃) (elastic)"
+    if isinstance(rheology, StandardLinearSolid):
+        v = speed_group(zeta, adhesion.gamma, adhesion.range)
+        lead = steady_crack(v, beta, "closing").zone_length * a0
+        trail = steady_crack(v, beta, "opening").zone_length * a0
+        return min(lead, trail), (f"steady Dugdale crack at Vτ/a0 = {v:.3g}: leading "
+                                  f"{lead:.3g}, trailing {trail:.3g} (a0 = {a0:.3g})")
+    return 0.5 * a0, f"lower bound a0/2 of a viscoelastic zone (a0 = {a0:.3g})"
+
+
+def _cohesive_step(problem, spec) -> PlanStep:
+    """Maugis–Dugdale zones: known loads beside each edge, resolved by the edge mesh or not."""
+    from ...contact.mesh import ZONE_CAP, clustered_nodes
+
     adh = problem.adhesion
+    amp = float(problem.profile.amplitude)
+    zone, how = cohesive_zones(adh, problem.rheology, float(problem.zeta))
+    choice = (f"Maugis-Dugdale zones (σ̃0 = {adh.strength(amp):.4g}, η = {adh.opening(amp):.4g}) "
+              "as known loads beside every edge, lengths from K̃ = 0 by an inner Newton "
+              "iteration, edge residual the tip gap g̃(c) = η")
+    if spec.smallest is not None:
+        h = spec.smallest
+        where = (f"the edge-clustered mesh's smallest element is {h:.3g} (or {ZONE_CAP:g} of the "
+                 "contact half-width if smaller)")
+    else:
+        h = float(clustered_nodes(1.0, spec.elements, spec.exponent)[1] + 1.0)
+        where = (f"no edge zones: the smallest element of eq. 4.22 is {h:.3g} for a contact "
+                 "half-width of 1 (it grows with the width)")
+    ratio = zone / h
+    if ratio >= ZONE_ELEMENTS:
+        verdict = f"resolved: the shortest zone ≈ {zone:.3g} spans {ratio:.3g} smallest elements"
+    elif ratio >= 1.0:
+        verdict = (f"partly resolved: the shortest zone ≈ {zone:.3g} spans {ratio:.3g} smallest "
+                   f"elements (< {ZONE_ELEMENTS}, the stress-intensity fit's)")
+    else:
+        verdict = (f"not resolved: the shortest zone ≈ {zone:.3g} is {1 / ratio:.3g} times smaller "
+                   "than the smallest element, so the result approaches the energy-balance "
+                   "(short-range, JKR-type) limit of adhesion kind 'energy-balance'")
+    return PlanStep(stage="edges", choice=choice + "; zones " + verdict,
+                    reason=f"{where}; zone estimate: {how}")
+
+
+def _cohesive(adhesion) -> bool:
+    """Whether the model has finite-range cohesive zones (and adhesion)."""
+    return adhesion.work_of_adhesion > 0 and hasattr(adhesion, "quasi_static_zone")
+
+
+def _edge_step(problem, spec=None) -> PlanStep:
+    adh = problem.adhesion
+    if _cohesive(adh) and spec is not None:
+        return _cohesive_step(problem, spec)
     if adh.work_of_adhesion <= 0:
         return PlanStep(stage="edges", choice="K̃ = 0 at every edge (bounded stress)",
                         reason="no adhesion: no energy perturbations are computed")
@@ -55,7 +127,7 @@ def bem_steps(problem, prepared) -> tuple:
     adhesive_load = problem.mean_pressure is not None and problem.adhesion.work_of_adhesion > 0
     control = (f"load control, p̃∞ = {problem.mean_pressure:g}" if problem.mean_pressure is not None
                else f"penetration control, Δ̃ = {problem.penetration:g}")
-    steps = [_mesh_step(problem, spec, kernel), _edge_step(problem),
+    steps = [_mesh_step(problem, spec, kernel), _edge_step(problem, spec),
              PlanStep(stage="path", choice=control + "; approach from first touch unless an "
                       "initial contact set is given",
                       reason="adhesive equilibria are path dependent; one scene, one answer"),
@@ -70,6 +142,8 @@ def bem_steps(problem, prepared) -> tuple:
                          "stability (dp̃∞/dΔ̃ > 0)" if adhesive_load else "")),
              PlanStep(stage="reuse",
                       choice="kernel tables once per solve (pass prepared= along a path); one LU "
-                             "per contact set, shared by every virtual edge advance",
+                             "per contact set, shared by every "
+                             + ("inner zone iteration" if _cohesive(problem.adhesion)
+                                else "virtual edge advance"),
                       reason="tables depend on rheology and ζ only")]
     return tuple(steps)

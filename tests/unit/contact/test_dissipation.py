@@ -1,0 +1,59 @@
+"""``contact.fields.dissipated_friction``: the power fed into the solid by a piecewise-constant
+stress, exact in real space, against a Fourier sum of the kernel's loss."""
+import numpy as np
+import pytest
+
+from viscocontact.contact import fields
+from viscocontact.contact.fields import KnownLoads, dissipated_friction
+from viscocontact.contact.mesh import Mesh
+from viscocontact.kernels import HalfPlane
+from viscocontact.rheology import Elastic, StandardLinearSolid
+
+AMP = 0.1
+
+
+def _field(seed=0, n=40):
+    rng = np.random.default_rng(seed)
+    nodes = np.sort(rng.uniform(-1.2, 1.3, n + 1))
+    mesh = Mesh(left=nodes[:-1], right=nodes[1:], contact=np.zeros(n, int),
+                edges=np.array([nodes[0], nodes[-1]]))
+    sigma = rng.normal(size=n) - 0.5
+    loads = KnownLoads(left=[nodes[0] - 0.2, nodes[-1]], right=[nodes[0], nodes[-1] + 0.15],
+                       stress=[2.0, 2.0])
+    p = -(mesh.width @ sigma + loads.force()) / (2 * np.pi)
+    return mesh, sigma, loads, p
+
+
+def _fourier(kernel, mesh, sigma, loads, p, modes=200_000):
+    left = np.concatenate([mesh.left, loads.left])
+    right = np.concatenate([mesh.right, loads.right])
+    sig = np.concatenate([sigma, loads.stress])
+    m = np.arange(1, modes + 1, dtype=float)
+    sig_hat = np.zeros(m.shape, complex)
+    for a, b, s in zip(left, right, sig):
+        sig_hat += s * (np.exp(-1j * m * a) - np.exp(-1j * m * b))
+    sig_hat /= 2j * np.pi * m
+    power = 4 * np.pi * np.sum(np.abs(sig_hat) ** 2 * kernel.multiplier(m).imag)
+    return AMP * power / (2 * np.pi * p)
+
+
+@pytest.mark.parametrize("zeta", [0.1, 1.0, 10.0])
+def test_real_space_power_is_the_fourier_sum(zeta):
+    kernel = HalfPlane().prepare(StandardLinearSolid(beta=10.0), zeta)
+    mesh, sigma, loads, p = _field()
+    exact = dissipated_friction(kernel, mesh, sigma, AMP, p, loads, chunk=7)
+    # the Fourier tail falls like 1/M (stress jumps): 2e5 modes leave ~1e-5 relative
+    assert exact == pytest.approx(_fourier(kernel, mesh, sigma, loads, p), rel=5e-5)
+
+
+def test_elastic_kernel_dissipates_nothing_and_limits():
+    mesh, sigma, loads, p = _field()
+    assert dissipated_friction(HalfPlane().prepare(Elastic(), 0.0), mesh, sigma, AMP, p, loads) == 0
+    kernel = HalfPlane().prepare(StandardLinearSolid(beta=10.0), 1.0)
+    assert np.isnan(dissipated_friction(kernel, mesh, sigma, AMP, 0.0, loads))
+    limit = fields.DISSIPATION_MAX_NODES
+    try:
+        fields.DISSIPATION_MAX_NODES = 10
+        assert np.isnan(dissipated_friction(kernel, mesh, sigma, AMP, p, loads))
+    finally:
+        fields.DISSIPATION_MAX_NODES = limit
