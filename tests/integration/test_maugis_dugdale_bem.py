@@ -180,3 +180,36 @@ def test_edge_zones_follow_the_moving_dugdale_crack_when_slow():
     v = speed_group(1e-3, model.gamma, model.range)
     assert trailing == pytest.approx(steady_crack(v, 10.0, "opening").zone_length, rel=3e-3)
     assert leading == pytest.approx(steady_crack(v, 10.0, "closing").zone_length, rel=6e-3)
+
+
+# ---- intermediate ζ: the approach branch peaks below the load, and the contact closes ---------
+def _closes(lam, p, zeta):
+    _, _, r = _viscoelastic(zeta, p, lam=lam)
+    assert r.converged and r.full_contact, r.message
+    assert "peaks at" in r.message
+    assert any(e.startswith("no equilibrium at the target load on the approach branch")
+               for e in r.extras["events"])
+    # full contact: eq. 4.16 on the grid against the spectral power fed into the solid
+    assert r.friction == pytest.approx(r.extras["friction_dissipation"], rel=1e-9)
+    return r
+
+
+def test_contact_closes_where_the_approach_branch_peaks_below_the_load():
+    """λ = 5, β = 10, ζ = 1, p̃∞ = 0.1: from first touch the trailing edge runs back towards the
+    trough while the load falls (it peaks at p̃∞ = -0.191, Δ̃ = 0.50; -0.86 where the branch ends
+    at Δ̃ = 0.81). Under load control the contact has no equilibrium on that branch and closes;
+    the closed interface's largest tension, 1/|K(1)| - p̃∞ = 1.31, is below σ̃0 = 3.95. This
+    failed before with the zones' bounded-stress equations without a root at the load-controlled
+    start."""
+    r = _closes(5.0, 0.1, 1.0)
+    assert "-0.1908" in r.message
+    assert r.friction == pytest.approx(0.4455446, rel=1e-6)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("lam, p, zeta", [(5.0, 0.05, 0.3), (5.0, 0.2, 0.3), (5.0, 0.05, 1.0),
+                                          (10.0, 0.05, 0.1), (10.0, 0.05, 0.3),
+                                          (10.0, 0.05, 1.0)])
+def test_contact_closes_at_intermediate_zeta(lam, p, zeta):
+    """The rest of the points that failed from first touch (7-30 s each): all close."""
+    _closes(lam, p, zeta)

@@ -84,8 +84,11 @@ class Path:
         d_prev = d0
         d_end = None if target.is_load else target.value
         step = self.path_step
+        peak = (-np.inf, d0)              # the largest load along the branch, and where
         while True:
             fields = state.fields
+            if fields.mean_pressure > peak[0]:
+                peak = (fields.mean_pressure, d_prev)
             if d_end is None and fields.mean_pressure >= target.value:
                 final = eq.solve(self.predicted(state, target.value - fields.mean_pressure,
                                                 load=True), target)
@@ -124,7 +127,10 @@ class Path:
                     # fold in penetration control: finish in load control
                     log.event(f"the approach branch ends at penetration {d_prev:.6g} below the "
                               "target load; solved in load control from there")
-                    return eq.solve(state.edges, target)
+                    final = eq.solve(state.edges, target)
+                    if final.outcome is Outcome.NOT_CONVERGED:
+                        return self.closed_past_peak(peak, target) or final
+                    return final
                 if jump is None:
                     return trial
                 if jump.outcome is Outcome.FULL_CONTACT:
@@ -135,6 +141,33 @@ class Path:
                 continue
             step *= 0.5
             log.event(f"approach step halved to {step:.3g}")
+
+    def closed_past_peak(self, peak: tuple[float, float], target: Control) -> State | None:
+        """Full contact when the approach branch under a target load has ended without an
+        equilibrium at it (or None): adhesive contact, the largest load along the branch
+        (``peak``: ``(p̃∞, Δ̃)``) below the target, and a closed interface that holds the
+        target (:meth:`ClosedContact.supports`).
+
+        Under load control a contact pressed beyond the largest load of its branch has no
+        equilibrium on it: it grows (unstably) until it closes over the period, as when the
+        branch ends in a fold (:meth:`snap`). The snap cannot always follow it there: with
+        Maugis-Dugdale zones the growing contact reaches contact sets the model does not
+        evaluate (zones that meet across the period, or no zone lengths that bound the stress)
+        before it closes (sinusoid Λ̃ = 0.1, Γ̃ = 0.05, λ = 5, β = 10, ζ = 1: the load peaks at
+        p̃∞ = -0.19 and falls to -0.86 before the branch ends; ``docs/cohesive.md``). The event
+        log says which load the branch peaked at.
+        """
+        if (self.eq.adhesion.work_of_adhesion <= 0 or not peak[0] < target.value
+                or not self.closed.supports(target.value)):
+            return None
+        self.log.event(f"no equilibrium at the target load on the approach branch: its load "
+                       f"peaks at {peak[0]:.4g} (penetration {peak[1]:.4g}); the contact grows "
+                       "past the branch's end and closes over the period (the closed interface's "
+                       f"largest tension {self.closed.largest_tension(target.value):.3g} is "
+                       "within its strength)")
+        return State.full_contact(message="contact closed over the period: the load along the "
+                                          f"approach branch peaks at {peak[0]:.4g}, below the "
+                                          "target")
 
     def next_step(self, step: float, predicted, before, after) -> float:
         """The step after a converged one, from how far the corrector moved the predicted edges
