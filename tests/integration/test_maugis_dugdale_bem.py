@@ -213,3 +213,27 @@ def test_contact_closes_where_the_approach_branch_peaks_below_the_load():
 def test_contact_closes_at_intermediate_zeta(lam, p, zeta):
     """The rest of the points that failed from first touch (7-30 s each): all close."""
     _closes(lam, p, zeta)
+
+
+# ---- rough profile: a contact is born where an asperity penetrates ------------------------------
+def test_a_penetrating_asperity_is_born_before_the_gap_below_the_range_is_reported():
+    """The thesis rough scene (examples/scenes/thesis_rough.toml) with Maugis-Dugdale zones of
+    h0 = 1 nm (h̃0 = 1.0e-6), ζ = 1e-6, Δ̃ = 0.0535 from the first contact (1.849, 1.917): the
+    asperity at x̃ ≈ 2.27 penetrates the solid (gap -30.9 h0). The gap check of the model
+    (below the range outside the zones) came first and failed every approach step there (the
+    approach branch then ended at Δ̃ = 0.051 for every ζ and load); now the contact is born."""
+    from pathlib import Path
+
+    import attrs
+
+    from viscocontact.scene import Scene
+
+    text = (Path(__file__).parents[2] / "examples/scenes/thesis_rough.toml").read_text()
+    text = text.replace('kind = "energy-balance"', 'kind = "maugis-dugdale"').replace(
+        "equilibrium_distance = 1e-9", "cohesive_range = 1e-9")
+    prob = attrs.evolve(ContactProblem.from_scene(Scene.from_toml(text)), zeta=1e-6,
+                        mean_pressure=None, penetration=0.0535)
+    r = prob.solve(initial=np.array([1.849, 1.917]))
+    assert r.converged, r.message
+    assert r.n_contacts == 2 and "1 contact(s) born" in r.extras["events"]
+    assert r.edges[1, 0] == pytest.approx(2.2475, abs=1e-3) and r.min_gap > 0
