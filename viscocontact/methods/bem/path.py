@@ -162,12 +162,13 @@ class Path:
         stress) before it closes (sinusoid Λ̃ = 0.1, Γ̃ = 0.05, λ = 5, β = 10, ζ = 1: the load
         peaks at p̃∞ = -0.19 and falls to -0.86 before the branch ends; a least-squares solve of
         edges and zones together finds no partial equilibrium at p̃∞ = 0.1;
-        ``docs/cohesive.md``). A branch that ends while its load still rises, or on a rough
-        profile, stays a failure. The event log says which load the branch peaked at.
+        ``docs/cohesive.md``). A branch that ends while its load still rises, or on a profile
+        with several asperities (or whose maxima are unknown), stays a failure. The event log
+        says which load the branch peaked at.
         """
         shape = self.eq.prep.shape
         if (self.eq.adhesion.work_of_adhesion <= 0 or not peak[0] < target.value
-                or len(shape.maxima) > 1 or end.fields is None
+                or len(shape.maxima) != 1 or end.fields is None
                 or not end.fields.mean_pressure
                 <= peak[0] - PEAK_FALL * (target.value - peak[0])
                 or not self.closed.supports(target.value)):
