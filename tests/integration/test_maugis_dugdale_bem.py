@@ -180,3 +180,60 @@ def test_edge_zones_follow_the_moving_dugdale_crack_when_slow():
     v = speed_group(1e-3, model.gamma, model.range)
     assert trailing == pytest.approx(steady_crack(v, 10.0, "opening").zone_length, rel=3e-3)
     assert leading == pytest.approx(steady_crack(v, 10.0, "closing").zone_length, rel=6e-3)
+
+
+# ---- intermediate ζ: the approach branch peaks below the load, and the contact closes ---------
+def _closes(lam, p, zeta):
+    _, _, r = _viscoelastic(zeta, p, lam=lam)
+    assert r.converged and r.full_contact, r.message
+    assert "peaks at" in r.message
+    assert any(e.startswith("no equilibrium at the target load on the approach branch")
+               for e in r.extras["events"])
+    # full contact: eq. 4.16 on the grid against the spectral power fed into the solid
+    assert r.friction == pytest.approx(r.extras["friction_dissipation"], rel=1e-9)
+    return r
+
+
+def test_contact_closes_where_the_approach_branch_peaks_below_the_load():
+    """λ = 5, β = 10, ζ = 1, p̃∞ = 0.1: from first touch the trailing edge runs back towards the
+    trough while the load falls (it peaks at p̃∞ = -0.191, Δ̃ = 0.50; -0.86 where the branch ends
+    at Δ̃ = 0.81). Under load control the contact has no equilibrium on that branch and closes;
+    the closed interface's largest tension, 1/|K(1)| - p̃∞ = 1.31, is below σ̃0 = 3.95. This
+    failed before with the zones' bounded-stress equations without a root at the load-controlled
+    start."""
+    r = _closes(5.0, 0.1, 1.0)
+    assert "-0.1908" in r.message
+    assert r.friction == pytest.approx(0.4455446, rel=1e-6)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("lam, p, zeta", [(5.0, 0.05, 0.3), (5.0, 0.2, 0.3), (5.0, 0.05, 1.0),
+                                          (10.0, 0.05, 0.1), (10.0, 0.05, 0.3),
+                                          (10.0, 0.05, 1.0)])
+def test_contact_closes_at_intermediate_zeta(lam, p, zeta):
+    """The rest of the points that failed from first touch (7-30 s each): all close."""
+    _closes(lam, p, zeta)
+
+
+# ---- rough profile: a contact is born where an asperity penetrates ------------------------------
+def test_a_penetrating_asperity_is_born_before_the_gap_below_the_range_is_reported():
+    """The thesis rough scene (examples/scenes/thesis_rough.toml) with Maugis-Dugdale zones of
+    h0 = 1 nm (h̃0 = 1.0e-6), ζ = 1e-6, Δ̃ = 0.0535 from the first contact (1.849, 1.917): the
+    asperity at x̃ ≈ 2.27 penetrates the solid (gap -30.9 h0). The gap check of the model
+    (below the range outside the zones) came first and failed every approach step there (the
+    approach branch then ended at Δ̃ = 0.051 for every ζ and load); now the contact is born."""
+    from pathlib import Path
+
+    import attrs
+
+    from viscocontact.scene import Scene
+
+    text = (Path(__file__).parents[2] / "examples/scenes/thesis_rough.toml").read_text()
+    text = text.replace('kind = "energy-balance"', 'kind = "maugis-dugdale"').replace(
+        "equilibrium_distance = 1e-9", "cohesive_range = 1e-9")
+    prob = attrs.evolve(ContactProblem.from_scene(Scene.from_toml(text)), zeta=1e-6,
+                        mean_pressure=None, penetration=0.0535)
+    r = prob.solve(initial=np.array([1.849, 1.917]))
+    assert r.converged, r.message
+    assert r.n_contacts == 2 and "1 contact(s) born" in r.extras["events"]
+    assert r.edges[1, 0] == pytest.approx(2.2475, abs=1e-3) and r.min_gap > 0

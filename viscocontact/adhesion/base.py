@@ -29,6 +29,9 @@ Contract for implementers
 6. Optionally, :meth:`gap_violation` returns a message when the gap outside the contacts (and
    outside the model's own loads) breaks the model's assumptions at an equilibrium; the
    orchestrator then reports the solve as not converged with that message.
+7. Optionally, :meth:`closed_strength` bounds the tension a closed (full-contact) interface
+   carries (default: unbounded with adhesion, 0 without); a finite-range law returns its
+   strength, and full contact with a larger tension is not an equilibrium.
 
 Every method receives an :class:`~viscocontact.contact.edges.EdgeContext`, which computes
 stress-intensity factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
@@ -96,6 +99,12 @@ class AdhesionModel(abc.ABC):
     def target(self, amplitude: float) -> float:
         """``2πγ̃/Λ̃²`` (eq. 4.20)."""
         return 2.0 * np.pi * self.work_of_adhesion / amplitude**2
+
+    def closed_strength(self, amplitude: float) -> float:
+        """The largest tension ``σ̃`` (eq. 4.17 units) that a closed interface carries without
+        opening: 0 without adhesion, unbounded for adhesion of vanishing range (a closed
+        interface has no flaw to open from); a finite-range law overrides it with its strength."""
+        return np.inf if self.work_of_adhesion > 0 else 0.0
 
     @abc.abstractmethod
     def residuals(self, ctx) -> np.ndarray:

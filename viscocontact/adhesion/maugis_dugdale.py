@@ -69,6 +69,11 @@ class MaugisDugdale(AdhesionModel):
         """``σ̃0 = 2πγ̃/(h̃0 Λ̃)`` (tensile)."""
         return 2.0 * np.pi * self.gamma / (self.range * amplitude)
 
+    def closed_strength(self, amplitude: float) -> float:
+        """``σ̃0``: a closed interface opens where its tension exceeds the cohesive stress (the
+        law's traction at a vanishing gap); 0 without adhesion."""
+        return self.strength(amplitude) if self.gamma > 0 else 0.0
+
     def opening(self, amplitude: float) -> float:
         """``η = h̃0/Λ̃``: the gap at the zone tips, in units of the amplitude."""
         return self.range / amplitude

@@ -109,3 +109,15 @@ def test_bounded_fit_reads_the_singularity_under_a_constant():
 
     k = stress_intensity(mesh, field, BOUNDED_POWERS)
     assert np.allclose(k, 0.2, rtol=1e-6)
+
+
+def test_closed_strength_is_the_cohesive_stress():
+    """A closed Maugis-Dugdale interface opens where its tension exceeds σ̃0; one of vanishing
+    range (energy balance) never; without adhesion wherever it is tensile."""
+    from viscocontact.adhesion import EnergyBalance, NoAdhesion
+
+    m = MaugisDugdale(gamma=5e-4, range=1e-3)
+    assert m.closed_strength(0.1) == m.strength(0.1)
+    assert MaugisDugdale(gamma=0.0, range=1e-3).closed_strength(0.1) == 0.0
+    assert EnergyBalance(gamma=5e-4).closed_strength(0.1) == np.inf
+    assert NoAdhesion().closed_strength(0.1) == 0.0

@@ -95,3 +95,22 @@ def test_a_contact_born_adhesive_grows_until_its_edges_hold():
     final = eq.solve(grown, control)
     assert final.outcome is Outcome.CONVERGED
     assert final.edges[0] > grown[0] and final.edges[1] < grown[1]   # within the overshoot
+
+
+@pytest.mark.parametrize("strength, load, holds", [(0.5, 0.6, True), (0.5, 0.4, False),
+                                                   (np.inf, -5.0, True), (0.0, 1.01, True),
+                                                   (0.0, 0.99, False)])
+def test_a_closed_interface_holds_while_its_tension_is_within_its_strength(strength, load,
+                                                                           holds):
+    """Full contact on an elastic sinusoid carries ``cos x̃ - p̃∞`` (largest tension 1 - p̃∞);
+    a Maugis-Dugdale interface (finite strength σ̃0) opens where that exceeds σ̃0, one without
+    adhesion (strength 0) wherever it is tensile, one of vanishing range never."""
+    from viscocontact.methods.bem.closed import ClosedContact
+    from viscocontact.rheology import Elastic
+
+    prob = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(), solver=Newton(),
+                          mean_pressure=load)
+    closed = ClosedContact(prob.prepare(), 1024, 0.0, adhesive=strength > 0, strength=strength)
+    assert closed.largest_tension(load) == pytest.approx(1.0 - load, abs=1e-12)
+    assert closed.supports(load) is holds
+    assert closed.holds(Control.load_of(load)) is holds

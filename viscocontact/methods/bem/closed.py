@@ -23,13 +23,18 @@ class ClosedContact:
         Left end of the period window.
     adhesive : bool
         Whether the interface carries tension (adhesion closes any tensile stretch).
+    strength : float
+        The largest tension the closed interface carries when ``adhesive``
+        (:meth:`AdhesionModel.closed_strength`; unbounded by default).
     """
 
-    def __init__(self, prep, check_points: int, origin: float, adhesive: bool):
+    def __init__(self, prep, check_points: int, origin: float, adhesive: bool,
+                 strength: float = np.inf):
         self.prep = prep
         self.points = max(check_points, 1024)
         self.origin = origin
         self.adhesive = adhesive
+        self.strength = float(strength) if adhesive else 0.0
 
     @functools.cached_property
     def stress(self):
@@ -49,20 +54,25 @@ class ClosedContact:
         c0 = self.prep.kernel.mean
         return -(penetration - 1.0 + rh[0].real) / (2 * np.pi * c0) if c0 != 0 else np.nan
 
+    def largest_tension(self, mean_pressure: float) -> float:
+        """The largest tensile stress of full contact at ``mean_pressure``."""
+        return float(np.max(self.stress[3])) - mean_pressure
+
     def supports(self, mean_pressure: float) -> bool:
-        """Whether full contact carries ``mean_pressure`` without tension (always with adhesion)."""
-        if self.adhesive:
+        """Whether full contact carries ``mean_pressure`` with no tension above the interface's
+        strength (none without adhesion; always with adhesion of vanishing range)."""
+        if self.adhesive and self.strength == np.inf:
             return True
-        return mean_pressure >= float(np.max(self.stress[3]))
+        return self.largest_tension(mean_pressure) <= self.strength
 
     def holds(self, control: Control) -> bool:
-        """Whether a closed contact stays closed under ``control`` (without adhesion: while it
-        carries no tension)."""
-        if self.adhesive:
+        """Whether a closed contact stays closed under ``control`` (while its tension stays
+        within the interface's strength: none without adhesion)."""
+        if self.adhesive and self.strength == np.inf:
             return True
         if control.is_load:
             return self.supports(control.value)
-        return self.mean_pressure_at(control.value) >= float(np.max(self.stress[3]))
+        return self.supports(self.mean_pressure_at(control.value))
 
     def result(self, control: Control, message: str, want_fields: bool, common: dict):
         """The :class:`ContactResult` of full contact under ``control``."""
@@ -95,12 +105,22 @@ class ClosedContact:
         mu = (float(np.mean(sigma * slopes) / pm)
               if abs(pm) > 1e-12 * float(np.mean(np.abs(sigma))) else np.nan)
         sqrt_m2 = np.sqrt(self.prep.m2)
-        ok = self.adhesive or bool(np.all(sigma <= 1e-9))
+        ok = bool(np.all(sigma <= self.strength + 1e-9))
+        # the power fed into the solid, 4π Σ_m |σ̂_m|² Im K(m) (the spectral form of
+        # :func:`~viscocontact.contact.fields.dissipated_friction`), as a friction coefficient
+        m = np.arange(1, len(sig_h), dtype=float)
+        power = 4 * np.pi * float(np.sum(np.abs(sig_h[1:]) ** 2
+                                         * self.prep.kernel.multiplier(m).imag))
+        common["extras"]["friction_dissipation"] = (
+            shape.amplitude * power / (2 * np.pi * pm) if np.isfinite(mu) else np.nan)
         fld = ({"x": x, "pressure": -sigma, "displacement": r - 1.0 + pen,
                 "gap": np.zeros_like(x)} if want_fields else None)
         return ContactResult(
             area=2 * np.pi, mean_pressure=float(pm), penetration=float(pen), friction=mu,
             reduced_friction=mu / sqrt_m2, n_contacts=1, edges=np.zeros((0, 2)), full_contact=True,
             converged=ok, status=SolveStatus.CONVERGED if ok else SolveStatus.FAILED,
-            message=message if ok else "full contact would carry tension without adhesion",
+            message=message if ok else (
+                "full contact would carry tension without adhesion" if not self.adhesive else
+                f"full contact would carry a tension of {float(np.max(sigma)):.4g}, above the "
+                f"strength {self.strength:.4g} of the closed interface"),
             residual=0.0, min_gap=0.0, fields=fld, **common)

@@ -186,10 +186,13 @@ class Equilibrium:
                              residual=size, message=message)
 
             xs, gap = self.checks.gap_outside(fields)          # once, for both checks
-            violation = self.adhesion.gap_violation(xs, gap, fields)
+            # births first: where the profile penetrates, a contact is born whatever the model
+            # makes of the gap elsewhere (Maugis-Dugdale: a gap below the range outside its zones,
+            # which a penetrating asperity also has around it)
+            regions = self.checks.births(fields, (xs, gap))
+            violation = None if regions else self.adhesion.gap_violation(xs, gap, fields)
             if violation is not None:
                 return not_converged(violation)
-            regions = self.checks.births(fields, (xs, gap))
             if regions and any(len(x) == len(y) and np.allclose(x, y, rtol=0, atol=1e-7)
                                for y in converged_before_births):
                 # the same equilibrium again: the contacts born from it last time vanished

@@ -66,7 +66,8 @@ class Solve:
         self.policy = MeshPolicy(self.spec, disc, prep.shape.wavelength)
         self.checks = Checks(prep, disc.check_points)
         self.closed = ClosedContact(prep, disc.check_points, self.checks.origin,
-                                    adhesive=adhesion.work_of_adhesion > 0)
+                                    adhesive=adhesion.work_of_adhesion > 0,
+                                    strength=adhesion.closed_strength(prep.shape.amplitude))
         tol = problem.tolerances
         self.equilibrium = Equilibrium(
             prep=prep, spec=self.spec, policy=self.policy, adhesion=adhesion,

@@ -21,6 +21,9 @@ APPROACH_BUDGET_ANALYTIC = 15
 #: Largest correction of a predicted edge, relative to its contact's half-width, that the step
 #: control aims at (:meth:`Path.next_step`).
 PREDICTOR_ERROR = 0.02
+#: How far the load must have fallen past its peak, relative to the target's distance above the
+#: peak, for :meth:`Path.closed_past_peak` to take the peak for the branch's load maximum.
+PEAK_FALL = 0.1
 
 
 class Path:
@@ -84,8 +87,11 @@ class Path:
         d_prev = d0
         d_end = None if target.is_load else target.value
         step = self.path_step
+        peak = (-np.inf, d0)              # the largest load along the branch, and where
         while True:
             fields = state.fields
+            if fields.mean_pressure > peak[0]:
+                peak = (fields.mean_pressure, d_prev)
             if d_end is None and fields.mean_pressure >= target.value:
                 final = eq.solve(self.predicted(state, target.value - fields.mean_pressure,
                                                 load=True), target)
@@ -124,7 +130,10 @@ class Path:
                     # fold in penetration control: finish in load control
                     log.event(f"the approach branch ends at penetration {d_prev:.6g} below the "
                               "target load; solved in load control from there")
-                    return eq.solve(state.edges, target)
+                    final = eq.solve(state.edges, target)
+                    if final.outcome is Outcome.NOT_CONVERGED:
+                        return self.closed_past_peak(peak, state, target) or final
+                    return final
                 if jump is None:
                     return trial
                 if jump.outcome is Outcome.FULL_CONTACT:
@@ -135,6 +144,43 @@ class Path:
                 continue
             step *= 0.5
             log.event(f"approach step halved to {step:.3g}")
+
+    def closed_past_peak(self, peak: tuple[float, float], end: State,
+                         target: Control) -> State | None:
+        """Full contact when the approach branch under a target load has ended (at ``end``)
+        without an equilibrium at the target (or None): an adhesive contact on a profile with
+        one asperity per period, whose load along the branch peaked (``peak``: ``(p̃∞, Δ̃)``)
+        below the target and then fell by at least :data:`PEAK_FALL` of the target's distance
+        from it, and a closed interface that holds the target (:meth:`ClosedContact.supports`).
+
+        Past the largest load of its branch (where the load falls as the contact grows) a
+        contact under load control has no equilibrium on that branch: it grows unstably, and
+        with one asperity per period no other contact can be born, so it closes over the
+        period — as when a branch ends in a fold (:meth:`snap`). The snap cannot always follow
+        it there: with Maugis-Dugdale zones the growing contact reaches contact sets the model
+        does not evaluate (zones that meet across the period, or no zone lengths that bound the
+        stress) before it closes (sinusoid Λ̃ = 0.1, Γ̃ = 0.05, λ = 5, β = 10, ζ = 1: the load
+        peaks at p̃∞ = -0.19 and falls to -0.86 before the branch ends; a least-squares solve of
+        edges and zones together finds no partial equilibrium at p̃∞ = 0.1;
+        ``docs/cohesive.md``). A branch that ends while its load still rises, or on a profile
+        with several asperities (or whose maxima are unknown), stays a failure. The event log
+        says which load the branch peaked at.
+        """
+        shape = self.eq.prep.shape
+        if (self.eq.adhesion.work_of_adhesion <= 0 or not peak[0] < target.value
+                or len(shape.maxima) != 1 or end.fields is None
+                or not end.fields.mean_pressure
+                <= peak[0] - PEAK_FALL * (target.value - peak[0])
+                or not self.closed.supports(target.value)):
+            return None
+        self.log.event(f"no equilibrium at the target load on the approach branch: its load "
+                       f"peaks at {peak[0]:.4g} (penetration {peak[1]:.4g}); the contact grows "
+                       "past the branch's end and closes over the period (the closed interface's "
+                       f"largest tension {self.closed.largest_tension(target.value):.3g} is "
+                       "within its strength)")
+        return State.full_contact(message="contact closed over the period: the load along the "
+                                          f"approach branch peaks at {peak[0]:.4g}, below the "
+                                          "target")
 
     def next_step(self, step: float, predicted, before, after) -> float:
         """The step after a converged one, from how far the corrector moved the predicted edges

@@ -37,9 +37,8 @@ class State:
         return self.outcome is Outcome.CONVERGED
 
     @classmethod
-    def full_contact(cls) -> "State":
-        return cls(outcome=Outcome.FULL_CONTACT, edges=np.zeros(0),
-                   message="contact closed over the period")
+    def full_contact(cls, message: str = "contact closed over the period") -> "State":
+        return cls(outcome=Outcome.FULL_CONTACT, edges=np.zeros(0), message=message)
 
     @classmethod
     def no_contact(cls) -> "State":
