@@ -14,7 +14,7 @@ cubic on the union of their break points. So on the union grid ``y`` (made symme
 with ``H_i`` the branch interpolants (:meth:`MemoryTable.antiderivative`) and ``C`` the layer
 correction re-expanded exactly (to rounding), ``K`` the instantaneous compliance and
 ``-Cl2(x) = -S(x) + x log|x|``, ``S(x) = x + x³ P(x²)`` the smooth part of the Clausen series
-(:mod:`~viscocontact.kernels.clausen`). ``S`` is the only piece that is interpolated (cubic
+(:func:`~viscocontact.kernels.clausen.cl2_smooth`). ``S`` is the only piece that is interpolated (cubic
 Hermite with exact slopes on intervals of at most 2e-3: error below 1e-14); the singular
 ``x log|x|`` stays in closed form. ``E`` (even, free of the Clausen part) has a second set of
 coefficients on the same intervals, so :meth:`KernelTable.pair` finds the interval once for
@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .clausen import _CL2_FAST, TWO_PI, wrap
+from .clausen import TWO_PI, cl2_smooth, wrap
 
 _TINY = np.finfo(float).tiny
 
@@ -48,14 +48,6 @@ def _reexpand(breaks, coef, lo, width, sign):
     j = np.clip(np.searchsorted(breaks, mid, side="right") - 1, 0, len(breaks) - 2)
     h = breaks[j + 1] - breaks[j]
     return _taylor_at([c[j] for c in coef], (start - breaks[j]) / h, sign * width / h)
-
-
-def _smooth_clausen(x):
-    """``S(x) = x + x³ P(x²)`` (so that ``Cl2 = S - x log|x|`` on ``[-π, π]``) and ``S'``."""
-    u = x * x
-    p = np.polyval(_CL2_FAST, u)
-    dp = np.polyval(np.polyder(_CL2_FAST), u)
-    return x + x * u * p, 1.0 + 3.0 * u * p + 2.0 * u * u * dp
 
 
 def _hermite(f, df, width):
@@ -115,7 +107,7 @@ class KernelTable:
         odd = [np.zeros(len(lo)) for _ in range(4)]
         even = [np.zeros(len(lo)) for _ in range(4)]
         for wi, tab in zip(weights, tables):
-            coef = tab._coef
+            coef = tab.coefficients
             for sign in (1.0, -1.0):
                 part = _reexpand(tab.nodes, coef, lo, width, sign)
                 for k in range(4):
@@ -135,7 +127,7 @@ class KernelTable:
                     even[k] += part[k]
                     if sign > 0:
                         odd[k] += part[k]
-        s, ds = _smooth_clausen(y)
+        s, ds = cl2_smooth(y)
         for k, c in enumerate(_hermite(s, ds, width)):
             odd[k] -= instantaneous * c
         odd = [c / np.pi for c in odd]
