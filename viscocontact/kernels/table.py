@@ -9,7 +9,7 @@ cubic on the union of their break points. So on the union grid ``y`` (made symme
 ``x ↦ -x`` maps intervals onto intervals) this table stores, per interval, the cubic
 
 .. math:: T(x) = \frac{1}{\pi}\Big[\sum_i w_i\,\mathcal{H}_i(x) + C(x) - K\,S(x)\Big],
-          \qquad F̃(x) = T(x) + \frac{K}{\pi}\,x\log|x| ,
+          \qquad \tilde F(x) = T(x) + \frac{K}{\pi}\,x\log|x| ,
 
 with ``H_i`` the branch interpolants (:meth:`MemoryTable.antiderivative`) and ``C`` the layer
 correction re-expanded exactly (to rounding), ``K`` the instantaneous compliance and
