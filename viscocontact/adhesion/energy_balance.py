@@ -119,15 +119,12 @@ class EnergyBalance(AdhesionModel):
         if self.edge_perturbation == 0.0:
             return np.sqrt(ctx.edge_compliance) * dfields.stress_intensity()
         n = ctx.n_edges
-        out = np.empty((n, dfields.n_dirs))
-        g = np.empty(n)
-        for i in range(n):
-            dx, slope = self._advance_and_slope(ctx, i)
-            d = dfields.energy_release(ctx, i, dx, np.append(slope, 0.0))
-            if d is None:               # a re-meshed advance: the caller differences
-                return None
-            du, dlp = ctx.energy_release(i, dx)
-            g[i], out[i] = du + dlp, d
+        advances = [self._advance_and_slope(ctx, i) for i in range(n)]
+        out = dfields.energy_releases(ctx, [(i, dx, np.append(slope, 0.0))
+                                            for i, (dx, slope) in enumerate(advances)])
+        if out is None:                 # a re-meshed advance: the caller differences
+            return None
+        g = np.array([sum(ctx.energy_release(i, dx)) for i, (dx, _) in enumerate(advances)])
         # the residual is sign(K̃)·√(4|δŨ/δX̃ + δL̃_P/δX̃|) - √(4·target) (see _release)
         sign = np.where(ctx.stress_intensity() >= 0, 1.0, -1.0) * np.sign(g)
         with np.errstate(divide="ignore"):

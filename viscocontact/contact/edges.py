@@ -124,6 +124,10 @@ def _antisymmetric_block(even_antiderivative, row_left, row_right, col_left, col
 #: Fewest edge elements in an advance for the bordered enlarged mesh (an aligned zone has 10).
 MIN_BORDER = 8
 
+#: Most new elements whose mutual influence coefficients :meth:`EdgeContext.prepare_borders`
+#: evaluates in one call (the advances' diagonal blocks are then taken from it).
+GROUP_ELEMENTS = 160
+
 
 def outward(edges: np.ndarray, i: int, dx: float) -> np.ndarray:
     """Edges with edge ``i`` moved outward by ``dx`` (left edges to the left, right to the right)."""
@@ -391,10 +395,22 @@ class EdgeContext:
             a_sig, hsig_a = self._base_products()
             cols_hsig = hsig @ cols
             rows_sigma = rows @ base.sigma
+        # the new elements against each other: each advance needs its diagonal block (tens
+        # of coefficients, where the call costs more than the evaluation), so groups of
+        # advances of up to GROUP_ELEMENTS elements are evaluated in one call
+        blocks, g0 = {}, 0
+        for n in range(1, len(new) + 1):
+            if n == len(new) or bounds[n + 1] - bounds[g0] > GROUP_ELEMENTS:
+                gs = slice(bounds[g0], bounds[n])
+                d_group = k.influence(xi[gs], a[gs], b[gs])
+                for m in range(g0, n):
+                    rel = slice(bounds[m] - bounds[g0], bounds[m + 1] - bounds[g0])
+                    blocks[m] = d_group[rel, rel]
+                g0 = n
         for n, ((i, dx), _) in enumerate(new):
             sl = slice(bounds[n], bounds[n + 1])
             ai, bi, yi = a[sl], b[sl], Y[:, sl]
-            d = k.influence(xi[sl], ai, bi)                      # (n, n)
+            d = blocks[n]                                        # (n, n)
             schur = lu_factor(d - r[sl] @ yi, check_finite=False)
             s_new = lu_solve(schur, w_new[sl] - r_sigma[sl], check_finite=False)
             s_old = base.sigma - yi @ s_new

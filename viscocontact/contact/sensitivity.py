@@ -32,7 +32,8 @@ import attrs
 import numpy as np
 from scipy.linalg import lu_solve
 
-from .edges import sif_calibration
+from ..kernels.prepared import pairwise
+from .edges import Border, sif_calibration
 from .fields import _POWERS, N_FIT, _avg_power
 from .mesh import contact_spec, element_counts, graded_nodes
 
@@ -148,15 +149,18 @@ class FieldSensitivity:
     def slopes(self):
         """``(G, E')`` at the base collocation points minus the base nodes (E' None for a
         reciprocal kernel): ``G = F' + c0``, ``E'`` the non-reciprocal part."""
-        x = self.fields.mesh.mid[:, None] - self.nodes[None, :]
-        return self._slopes(x)
+        return self._slopes(self.fields.mesh.mid, self.nodes)
 
-    def _slopes(self, x):
+    def _slopes(self, points, nodes):
+        """``(G, E')`` at ``points`` minus ``nodes`` (every pair)."""
         k = self.kernel
         if self.dissipative:
-            g, e = k.slope_pair(x)
-            return g + k.mean, e
-        return k.antiderivative_slope(x) + k.mean, None
+            g, e = pairwise(k.slope_pair, points, nodes)
+            g += k.mean
+            return g, e
+        g = pairwise(k.antiderivative_slope, points, nodes)
+        g += k.mean
+        return g, None
 
     @property
     def dissipative(self) -> bool:
@@ -225,75 +229,153 @@ class FieldSensitivity:
         """``d(δŨ/δX̃ + δL̃_P/δX̃)/d(x, Δ̃)`` (D,) of edge ``i`` advanced by ``dx`` on the bordered
         mesh (``ddx``: the advance's own derivatives, (D,), when it depends on the edges).
         None when the advance is not bordered (then the caller differences)."""
-        border = ctx.border(i, dx)
-        if border is None:
-            return None
+        out = self.energy_releases(ctx, [(i, dx, ddx)])
+        return None if out is None else out[0]
+
+    def energy_releases(self, ctx, advances) -> np.ndarray | None:
+        """:meth:`energy_release` of several edge advances ``(i, dx, ddx)`` at once: (M, D).
+
+        The edges share the kernel evaluations (one call for all new nodes), the adjoint
+        solves (one multiple right-hand-side solve on the base factorisation) and the products
+        with the base mesh's slope matrices (matrix-matrix instead of one matrix-vector product
+        per edge). None when any advance is not bordered."""
         f, mesh = self.fields, self.fields.mesh
         D = self.n_dirs
-        ddx = np.zeros(D) if ddx is None else np.asarray(ddx, dtype=float)
         sig, h, w = f.sigma, mesh.width, f.rhs0 + f.penetration
-        s_old, s_new, w_n = border.s_old, border.s_new, border.w_new
-        h_n = border.right - border.left
-        n = len(s_new)
-        # new nodes: translated with edge i, stretched with the advance
-        new_nodes = np.append(border.left, border.right[-1])
-        x_edge = mesh.edges[i]
-        phi = (new_nodes - (x_edge - dx if i % 2 == 0 else x_edge)) / dx
-        nv = np.outer(phi - (1.0 if i % 2 == 0 else 0.0), ddx)
-        nv[:, i] += 1.0
-        li_n, ri_n = np.arange(n), np.arange(1, n + 1)
-        xi_n = 0.5 * (border.left + border.right)
-        xv_n = 0.5 * (nv[li_n] + nv[ri_n])
-        hv_n = nv[ri_n] - nv[li_n]
-        wv_n = self.shape.slopes(xi_n)[:, None] * xv_n
-        wv_n[:, -1] = 1.0
+        edges = []
+        for i, dx, ddx in advances:
+            border = ctx.border(i, dx)
+            if border is None:
+                return None
+            ddx = np.zeros(D) if ddx is None else np.asarray(ddx, dtype=float)
+            n = len(border.s_new)
+            # new nodes: translated with edge i, stretched with the advance
+            new_nodes = np.append(border.left, border.right[-1])
+            x_edge = mesh.edges[i]
+            phi = (new_nodes - (x_edge - dx if i % 2 == 0 else x_edge)) / dx
+            nv = np.outer(phi - (1.0 if i % 2 == 0 else 0.0), ddx)
+            nv[:, i] += 1.0
+            li_n, ri_n = np.arange(n), np.arange(1, n + 1)
+            xi_n = 0.5 * (border.left + border.right)
+            edges.append(_Advance(
+                border=border, dx=float(dx), ddx=ddx, nodes=new_nodes, node_vel=nv, mid=xi_n,
+                colloc_vel=0.5 * (nv[li_n] + nv[ri_n]), width_vel=nv[ri_n] - nv[li_n],
+                s_b=self.node_weights(border.s_old),
+                s_n=self.node_weights(border.s_new, li_n, ri_n, n + 1)))
+        m = len(edges)
+        if m == 0:
+            return np.empty((0, D))
+        dissipative = self.dissipative and all(e.border.cols is not None for e in edges)
+        # kernel slopes for every edge's new nodes and collocation points, in three calls
+        node_bounds = np.cumsum([0] + [len(e.nodes) for e in edges])
+        mid_bounds = np.cumsum([0] + [len(e.mid) for e in edges])
+        all_nodes = np.concatenate([e.nodes for e in edges])
+        all_mid = np.concatenate([e.mid for e in edges])
         G_bb, E_bb = self.slopes
-        G_bn, E_bn = self._slopes(mesh.mid[:, None] - new_nodes[None, :])
-        G_nb, E_nb = self._slopes(xi_n[:, None] - self.nodes[None, :])
-        G_nn, _ = self._slopes(xi_n[:, None] - new_nodes[None, :])
-        s_b = self.node_weights(s_old)                          # σₑ on the base nodes
-        s_n = self.node_weights(s_new, li_n, ri_n, n + 1)       # ... and on the new ones
+        G_bn, E_bn = self._slopes(mesh.mid, all_nodes)
+        G_nb, E_nb = self._slopes(all_mid, self.nodes)
+        G_nn, _ = self._slopes(all_mid, all_nodes)
         s_sig = self.node_weights(sig)
-        # adjoint of the enlarged field: ψₑ = ∂(δU + δL_P)/∂σₑ
+        S_b = np.column_stack([e.s_b for e in edges])                       # (K, M)
+        S_old = np.column_stack([e.border.s_old for e in edges])            # (N, M)
+        GS_b = G_bb @ S_b                                                   # (N, M)
         psi_b = -0.5 * h * w
-        psi_n = -0.5 * h_n * w_n
-        psi = 0.5 * h * w                                        # ∂/∂σ of the base field
-        explicit = (-0.5 * ((self.width_vel.T @ (s_old * w)) + (hv_n.T @ (s_new * w_n))
-                            + self.w_vel.T @ (h * s_old) + wv_n.T @ (h_n * s_new))
-                    + 0.5 * (self.width_vel.T @ (sig * w) + self.w_vel.T @ (h * sig)))
-        if self.dissipative and border.cols is not None:
-            cols, rows = border.cols, border.rows
+        Psi = np.repeat((0.5 * h * w)[:, None], m, axis=1)                  # ∂/∂σ of the base field
+        if dissipative:
             a_sig, hsig_a = ctx._base_products()
             A0 = ctx._antisymmetric_matrix()
             hsig = h * sig
             psi_b = psi_b - 0.25 * (hsig_a - h * a_sig)
-            psi_n = psi_n - 0.25 * (cols.T @ hsig - h_n * (rows @ sig))
-            a_e = A0 @ s_old + cols @ s_new                      # (Aₑσₑ) on the base rows
-            psi = psi - 0.25 * (h * a_e - (A0.T @ (h * s_old) + rows.T @ (h_n * s_new)))
-            # T1: ḣ on the base rows of (h̄σ̄)ᵀAₑσₑ
-            t1 = self.width_vel.T @ (sig * a_e)
-            # T2: (h̄σ̄)ᵀ Ȧₑ σₑ (base rows, all nodes)
-            e_s = E_bb @ s_b + E_bn @ s_n
-            t2 = (self.colloc_vel.T @ (hsig * e_s) - self.node_vel.T @ ((hsig @ E_bb) * s_b)
-                  - nv.T @ ((hsig @ E_bn) * s_n))
-            # T3: ḣₑ in (hₑσₑ)ᵀAₑσ̄
-            t3 = self.width_vel.T @ (s_old * a_sig) + hv_n.T @ (s_new * (rows @ sig))
-            # T4: (hₑσₑ)ᵀ Ȧₑ σ̄ (all rows, base nodes only: σ̄ vanishes on the new elements)
-            hs_old, hs_new = h * s_old, h_n * s_new
-            t4 = (self.colloc_vel.T @ (hs_old * (E_bb @ s_sig)) + xv_n.T @ (hs_new * (E_nb @ s_sig))
-                  - self.node_vel.T @ ((hs_old @ E_bb + hs_new @ E_nb) * s_sig))
-            explicit = explicit - 0.25 * (t1 + t2 - t3 - t4)
-        # λₑ = Bₑ⁻ᵀ ψₑ through the Schur complement: λ_n = S⁻ᵀ(ψ_n - Yᵀψ_b), λ_b = B⁻ᵀ(ψ_b - rᵀλ_n)
-        lam_n = lu_solve(border.schur, psi_n - border.Y.T @ psi_b, trans=1, check_finite=False)
-        lam_b = self.adjoint(psi_b - border.r.T @ lam_n)
-        # λₑᵀ(ẇₑ - Ḃₑσₑ)
-        g_b = G_bb @ s_b + G_bn @ s_n
-        g_n = G_nb @ s_b + G_nn @ s_n
-        lg_b = lam_b @ G_bb + lam_n @ G_nb
-        lg_n = lam_b @ G_bn + lam_n @ G_nn
-        b_e = (self.colloc_vel.T @ (lam_b * g_b) + xv_n.T @ (lam_n * g_n)
-               - self.node_vel.T @ (lg_b * s_b) - nv.T @ (lg_n * s_n))
-        enlarged = self.w_vel.T @ lam_b + wv_n.T @ lam_n - b_e
-        base = self.adjoint(psi) @ self.rhs
-        total = (border.d_u + border.d_lp) / dx
-        return (enlarged + base + explicit) / dx - total * ddx / dx
+            A_old = A0 @ S_old                                              # (N, M)
+            At_old = A0.T @ (h[:, None] * S_old)                            # (N, M)
+            ES_b = E_bb @ S_b                                               # (N, M)
+            hsig_E_bb = hsig @ E_bb                                         # (K,)
+            E_bb_sig = E_bb @ s_sig                                         # (N,)
+            E_nb_sig = E_nb @ s_sig                                         # (Σn,)
+            hsE_old = E_bb.T @ (h[:, None] * S_old)                         # (K, M)
+        lam_n, rhs_b = [], np.empty((len(sig), m))
+        for k, e in enumerate(edges):
+            b = e.border
+            nb_, mb_ = slice(node_bounds[k], node_bounds[k + 1]), slice(mid_bounds[k],
+                                                                         mid_bounds[k + 1])
+            h_n = b.right - b.left
+            psi_n = -0.5 * h_n * b.w_new
+            if dissipative:
+                cols, rows = b.cols, b.rows
+                assert cols is not None and rows is not None
+                psi_n = psi_n - 0.25 * (cols.T @ hsig - h_n * (rows @ sig))
+                a_e = A_old[:, k] + cols @ b.s_new
+                Psi[:, k] -= 0.25 * (h * a_e - (At_old[:, k] + rows.T @ (h_n * b.s_new)))
+            # λₑ = Bₑ⁻ᵀ ψₑ through the Schur complement: λ_n = S⁻ᵀ(ψ_n - Yᵀψ_b),
+            # λ_b = B⁻ᵀ(ψ_b - rᵀλ_n)
+            ln = lu_solve(b.schur, psi_n - b.Y.T @ psi_b, trans=1, check_finite=False)
+            lam_n.append(ln)
+            rhs_b[:, k] = psi_b - b.r.T @ ln
+            e.spans = (nb_, mb_)
+        lam = self.adjoint(np.column_stack([rhs_b, Psi]))                  # (N, 2M)
+        lam_b, mu = lam[:, :m], lam[:, m:]
+        base = mu.T @ self.rhs                                              # (M, D)
+        LG_b = G_bb.T @ lam_b                                               # (K, M)
+        out = np.empty((m, D))
+        for k, e in enumerate(edges):
+            b = e.border
+            nb_, mb_ = e.spans
+            h_n = b.right - b.left
+            s_old, s_new, s_b, s_n = b.s_old, b.s_new, e.s_b, e.s_n
+            wv_n = self.shape.slopes(e.mid)[:, None] * e.colloc_vel
+            wv_n[:, -1] = 1.0
+            explicit = (-0.5 * (self.width_vel.T @ (s_old * w) + e.width_vel.T @ (s_new * b.w_new)
+                                + self.w_vel.T @ (h * s_old) + wv_n.T @ (h_n * s_new))
+                        + 0.5 * (self.width_vel.T @ (sig * w) + self.w_vel.T @ (h * sig)))
+            g_bn, g_nb, g_nn = G_bn[:, nb_], G_nb[mb_], G_nn[mb_, nb_]
+            if dissipative:
+                cols, rows = b.cols, b.rows
+                assert cols is not None and rows is not None
+                e_bn, e_nb = E_bn[:, nb_], E_nb[mb_]
+                a_e = A_old[:, k] + cols @ s_new
+                # T1: ḣ on the base rows of (h̄σ̄)ᵀAₑσₑ
+                t1 = self.width_vel.T @ (sig * a_e)
+                # T2: (h̄σ̄)ᵀ Ȧₑ σₑ (base rows, all nodes)
+                e_s = ES_b[:, k] + e_bn @ s_n
+                t2 = (self.colloc_vel.T @ (hsig * e_s) - self.node_vel.T @ (hsig_E_bb * s_b)
+                      - e.node_vel.T @ ((hsig @ e_bn) * s_n))
+                # T3: ḣₑ in (hₑσₑ)ᵀAₑσ̄
+                t3 = (self.width_vel.T @ (s_old * a_sig)
+                      + e.width_vel.T @ (s_new * (rows @ sig)))
+                # T4: (hₑσₑ)ᵀ Ȧₑ σ̄ (all rows, base nodes only: σ̄ vanishes on the new elements)
+                hs_old, hs_new = h * s_old, h_n * s_new
+                t4 = (self.colloc_vel.T @ (hs_old * E_bb_sig)
+                      + e.colloc_vel.T @ (hs_new * E_nb_sig[mb_])
+                      - self.node_vel.T @ ((hsE_old[:, k] + hs_new @ e_nb) * s_sig))
+                explicit = explicit - 0.25 * (t1 + t2 - t3 - t4)
+            lb, ln = lam_b[:, k], lam_n[k]
+            # λₑᵀ(ẇₑ - Ḃₑσₑ)
+            g_b = GS_b[:, k] + g_bn @ s_n
+            g_n = g_nb @ s_b + g_nn @ s_n
+            lg_b = LG_b[:, k] + ln @ g_nb
+            lg_n = lb @ g_bn + ln @ g_nn
+            b_e = (self.colloc_vel.T @ (lb * g_b) + e.colloc_vel.T @ (ln * g_n)
+                   - self.node_vel.T @ (lg_b * s_b) - e.node_vel.T @ (lg_n * s_n))
+            enlarged = self.w_vel.T @ lb + wv_n.T @ ln - b_e
+            total = (b.d_u + b.d_lp) / e.dx
+            out[k] = (enlarged + base[k] + explicit) / e.dx - total * e.ddx / e.dx
+        return out
+
+
+@attrs.define(kw_only=True, eq=False)
+class _Advance:
+    """One edge advance's bordered field with its node and collocation velocities (the
+    per-edge part of :meth:`FieldSensitivity.energy_releases`)."""
+
+    border: Border
+    dx: float
+    ddx: np.ndarray
+    nodes: np.ndarray
+    node_vel: np.ndarray
+    mid: np.ndarray
+    colloc_vel: np.ndarray
+    width_vel: np.ndarray
+    s_b: np.ndarray
+    s_n: np.ndarray
+    #: its columns among all new nodes and its rows among all new collocation points
+    spans: tuple = ()

@@ -214,6 +214,14 @@ class MemoryTable:
     def _index(self):
         return np.arange(len(self.nodes), dtype=float)
 
+    @property
+    def coefficients(self) -> tuple:
+        """The piecewise cubic of :meth:`antiderivative`: per interval ``[x_j, x_{j+1}]`` of
+        :attr:`nodes`, the coefficients of ``t⁰, ..., t³`` in ``t = (x - x_j)/(x_{j+1} - x_j)``
+        (four arrays; :class:`~viscocontact.kernels.table.KernelTable` sums them over the
+        branches)."""
+        return self._coef
+
     @functools.cached_property
     def _coef(self):
         """Per interval, the coefficients of ``t⁰``, ..., ``t³`` of the Hermite interpolant minus

@@ -10,7 +10,10 @@ The antiderivative of the kernel, vanishing at 0 and periodic, is assembled from
 the first term in closed form (Clausen), the memory terms from :class:`MemoryTable` (one per
 creep branch), the layer correction (``A_m = 1 - S_m``, exponentially decaying) from an FFT on a
 uniform grid with a periodic cubic spline. The influence coefficient of element ``[a, b]`` at
-collocation point ``ξ`` (eq. 4.32) is then ``B = F(ξ - a) - F(ξ - b) + c0 (b - a)``.
+collocation point ``ξ`` (eq. 4.32) is then ``B = F(ξ - a) - F(ξ - b) + c0 (b - a)``. Every piece
+but the Clausen function's ``x log|x|`` is a piecewise cubic; :class:`~.table.KernelTable`
+holds their sum as one cubic per interval of the union grid, which is what the evaluations use
+(the ``*_terms`` methods sum the pieces one by one, as reference).
 
 Branches with ``ζ_i < 1e-12`` are taken as fully relaxed (error ``O(ζ log ζ)``) and those with
 ``ζ_i > 1e12`` as frozen (error ``O(1/ζ)``).
@@ -23,6 +26,7 @@ from scipy.interpolate import CubicSpline
 
 from .clausen import TWO_PI, cl2, log_kernel, wrap
 from .memory import MemoryTable
+from .table import KernelTable
 
 ZETA_RELAXED = 1e-12
 ZETA_FROZEN = 1e12
@@ -61,6 +65,9 @@ class PreparedKernel:
     k_inf: float
     regimes: np.ndarray
     tolerance: float | None = None
+    #: the antiderivative as one cubic table (:mod:`~viscocontact.kernels.table`); None for an
+    #: elastic half-plane, whose antiderivative is the Clausen function alone
+    table: KernelTable | None = None
 
     @classmethod
     def build(cls, kernel, rheology, zeta: float, tolerance: float | None = None) -> "PreparedKernel":
@@ -83,10 +90,12 @@ class PreparedKernel:
         n_modes = kernel.correction_modes()
         if n_modes > 0:
             corr, corr_v = _correction_splines(kernel, k_inf, w_all, z_all, n_modes)
+        table = (KernelTable.build(inst, w, tables, corr) if tables or corr is not None
+                 else None)
         return cls(kernel=kernel, zeta=zeta, instantaneous=inst, weights=w, zetas=z,
                    mean=float(kernel.mean_compliance()), tables=tables, correction=corr,
                    correction_values=corr_v, all_weights=w_all, all_zetas=z_all, k_inf=k_inf,
-                   regimes=regime, tolerance=tolerance)
+                   regimes=regime, tolerance=tolerance, table=table)
 
     def relaxation_lengths(self) -> np.ndarray:
         """``ζ τ_r,i/τ`` of the active branches, ascending: the memory lengths of the relaxation
@@ -116,8 +125,53 @@ class PreparedKernel:
         return self.kernel.geometry_factors(m) * self.compliance(m)
 
     # ---- real space ------------------------------------------------------------------------
+    # The evaluations below use the combined table (one interval search and one cubic per
+    # function, :mod:`~viscocontact.kernels.table`); the ``*_terms`` methods assemble the same
+    # functions from the pieces (Clausen, each branch's memory table, the layer correction) and
+    # are the reference the table is tested against.
     def antiderivative(self, x):
         """``F̃(x) = ∫_0^x G̃(s) ds`` without the constant ``c0`` part (periodic, F̃(0) = 0)."""
+        if self.table is None:
+            return self.antiderivative_terms(x)
+        return self.table.antiderivative(x)
+
+    def even_antiderivative(self, x):
+        """``F̃(x) + F̃(-x)``: only the non-reciprocal (dissipative) part of the kernel survives.
+
+        ``∫_e [G̃(ξ - y) - G̃(y - ξ)] dy = E(ξ - a) - E(ξ - b)`` with ``E`` this function; it vanishes
+        identically for an elastic kernel (the Clausen part is odd).
+        """
+        if self.table is None:
+            return self.even_antiderivative_terms(x)
+        return self.table.even(x)
+
+    def antiderivative_pair(self, x):
+        """``[F̃(x), F̃(x) + F̃(-x)]`` stacked (:meth:`antiderivative` and
+        :meth:`even_antiderivative`, the same values) from one interval search."""
+        if self.table is None:
+            return self.antiderivative_pair_terms(x)
+        return self.table.pair(x)
+
+    def antiderivative_slope(self, x):
+        """``F̃'(x)``: the derivative of :meth:`antiderivative` as computed (the tables'
+        interpolants differentiated), i.e. the kernel without ``c0`` up to the tables' error.
+        An influence coefficient ``F̃(ξ - a) - F̃(ξ - b) + c0 (b - a)`` changes with its element
+        ends and collocation point by these slopes (:mod:`viscocontact.contact.sensitivity`)."""
+        if self.table is None:
+            return self.antiderivative_slope_terms(x)
+        return self.table.slope(x)
+
+    def slope_pair(self, x):
+        """``[F̃'(x), E'(x)]`` stacked: :meth:`antiderivative_slope` and the derivative of
+        :meth:`even_antiderivative` (``F̃'(x) - F̃'(-x)``, the non-reciprocal part of the kernel),
+        from one interval search."""
+        if self.table is None:
+            return self.slope_pair_terms(x)
+        return self.table.slope_pair(x)
+
+    def antiderivative_terms(self, x):
+        """:meth:`antiderivative` from the pieces: ``-K Cl2`` in closed form, each branch's
+        :meth:`MemoryTable.antiderivative` and the layer correction spline."""
         x = np.asarray(x, dtype=float)
         w = wrap(x)
         acc = cl2(w, wrapped=True)
@@ -129,12 +183,8 @@ class PreparedKernel:
         acc /= np.pi
         return acc
 
-    def even_antiderivative(self, x):
-        """``F̃(x) + F̃(-x)``: only the non-reciprocal (dissipative) part of the kernel survives.
-
-        ``∫_e [G̃(ξ - y) - G̃(y - ξ)] dy = E(ξ - a) - E(ξ - b)`` with ``E`` this function; it vanishes
-        identically for an elastic kernel (the Clausen part is odd and is skipped).
-        """
+    def even_antiderivative_terms(self, x):
+        """:meth:`even_antiderivative` from the pieces (the Clausen part is odd and skipped)."""
         x = np.asarray(x, dtype=float)
         acc = np.zeros_like(x)
         for wi, tab in zip(self.weights, self.tables):
@@ -143,10 +193,9 @@ class PreparedKernel:
             acc = acc + self.correction(np.mod(x, TWO_PI)) + self.correction(np.mod(-x, TWO_PI))
         return acc / np.pi
 
-    def antiderivative_pair(self, x):
-        """``[F̃(x), F̃(x) + F̃(-x)]`` stacked (:meth:`antiderivative` and
-        :meth:`even_antiderivative`, the same values), sharing each memory table's evaluation at
-        ``x``: two table look-ups per branch instead of three."""
+    def antiderivative_pair_terms(self, x):
+        """:meth:`antiderivative_pair` from the pieces, sharing each memory table's evaluation
+        at ``x``."""
         x = np.asarray(x, dtype=float)
         w = wrap(x)                      # once for every table (and -w is in [-π, π] too)
         out = np.empty((2,) + x.shape)
@@ -166,11 +215,9 @@ class PreparedKernel:
         out /= np.pi
         return out
 
-    def antiderivative_slope(self, x):
-        """``F̃'(x)``: the derivative of :meth:`antiderivative` as computed (the memory tables'
-        interpolants differentiated), i.e. the kernel without ``c0`` up to the tables' error.
-        An influence coefficient ``F̃(ξ - a) - F̃(ξ - b) + c0 (b - a)`` changes with its element
-        ends and collocation point by these slopes (:mod:`viscocontact.contact.sensitivity`)."""
+    def antiderivative_slope_terms(self, x):
+        """:meth:`antiderivative_slope` from the pieces (``K g`` in closed form, each memory
+        table's interpolant differentiated, the correction spline's derivative)."""
         x = np.asarray(x, dtype=float)
         acc = self.instantaneous * log_kernel(x)
         for wi, tab in zip(self.weights, self.tables):
@@ -179,10 +226,8 @@ class PreparedKernel:
             acc = acc + self.correction(np.mod(x, TWO_PI), 1)
         return acc / np.pi
 
-    def slope_pair(self, x):
-        """``[F̃'(x), E'(x)]`` stacked: :meth:`antiderivative_slope` and the derivative of
-        :meth:`even_antiderivative` (``F̃'(x) - F̃'(-x)``, the non-reciprocal part of the kernel),
-        sharing each memory table's look-up at ``x``."""
+    def slope_pair_terms(self, x):
+        """:meth:`slope_pair` from the pieces."""
         x = np.asarray(x, dtype=float)
         w = wrap(x)
         acc = self.instantaneous * log_kernel(x)
@@ -261,7 +306,12 @@ def branch_regimes(memory_lengths, tolerance: float | None = None) -> np.ndarray
     return np.where(relaxed, RELAXED, np.where(frozen, FROZEN, ACTIVE))
 
 
-def element_integrals(antiderivative, points, left, right) -> np.ndarray:
+#: Target number of kernel evaluations per block of rows in :func:`element_integrals`: the
+#: temporaries of one table look-up (a few arrays of this size) then stay in the CPU cache.
+BLOCK_SIZE = 1 << 14
+
+
+def element_integrals(antiderivative, points, left, right, block: int = BLOCK_SIZE) -> np.ndarray:
     """``F(ξ_l - a_q) - F(ξ_l - b_q)`` for an antiderivative ``F``: integrals over elements.
 
     Neighbouring elements share an end (``b_q = a_{q+1}``), so ``F`` is evaluated once per
@@ -269,7 +319,8 @@ def element_integrals(antiderivative, points, left, right) -> np.ndarray:
     elements come in chains of neighbours (a mesh's contacts), the element integrals are
     differences of neighbouring columns, taken by slices. ``F`` may return
     several functions stacked along leading axes (shape ``(k,) + x.shape``, e.g.
-    :meth:`PreparedKernel.antiderivative_pair`); so does the result.
+    :meth:`PreparedKernel.antiderivative_pair`); so does the result. ``F`` is called on blocks
+    of rows of about ``block`` points each (the result does not depend on it).
     """
     xi = np.asarray(points, dtype=float)
     a = np.asarray(left, dtype=float)
@@ -281,20 +332,55 @@ def element_integrals(antiderivative, points, left, right) -> np.ndarray:
         starts = np.concatenate([[0], starts])
         stops = np.append(starts[1:], a.size)
         nodes = np.concatenate([np.append(a[s:e], b[e - 1]) for s, e in zip(starts, stops)])
-        values = antiderivative(xi[:, None] - nodes[None, :])
-        out = np.empty(values.shape[:-1] + (a.size,))
-        k = 0
-        for s, e in zip(starts, stops):
-            np.subtract(values[..., k:k + e - s], values[..., k + 1:k + e - s + 1],
-                        out=out[..., s:e])
-            k += e - s + 1
-        return out
+
+        def chains(values, out):
+            k = 0
+            for s, e in zip(starts, stops):
+                np.subtract(values[..., k:k + e - s], values[..., k + 1:k + e - s + 1],
+                            out=out[..., s:e])
+                k += e - s + 1
+
+        return _row_blocks(antiderivative, xi, nodes, a.size, chains, block)
     ends, where = np.unique(np.concatenate([a, b]), return_inverse=True)
     where = where.ravel()
-    if ends.size == a.size + b.size:        # no shared ends
-        return antiderivative(xi[:, None] - a[None, :]) - antiderivative(xi[:, None] - b[None, :])
-    values = antiderivative(xi[:, None] - ends[None, :])
-    return values[..., where[:a.size]] - values[..., where[a.size:]]
+    lo: slice | np.ndarray
+    hi: slice | np.ndarray
+    if ends.size == a.size + b.size:        # no shared ends: both ends of every element
+        ends = np.concatenate([a, b])
+        lo, hi = slice(0, a.size), slice(a.size, None)
+    else:
+        lo, hi = where[:a.size], where[a.size:]
+
+    def gather(values, out):
+        np.subtract(values[..., lo], values[..., hi], out=out)
+
+    return _row_blocks(antiderivative, xi, ends, a.size, gather, block)
+
+
+def pairwise(function, points, ends, block: int = BLOCK_SIZE) -> np.ndarray:
+    """``function(ξ_l - e_k)`` for every point and end (shape ``(k,) + (N, M)`` when
+    ``function`` stacks ``k`` functions), evaluated on blocks of rows as in
+    :func:`element_integrals`."""
+    xi = np.asarray(points, dtype=float)
+    ends = np.asarray(ends, dtype=float)
+
+    def copy(values, out):
+        out[...] = values
+
+    return _row_blocks(function, xi, ends, ends.size, copy, block)
+
+
+def _row_blocks(antiderivative, xi, ends, n_out, combine, block):
+    """``combine(F(ξ_rows - ends), out_rows)`` over blocks of rows into one new array."""
+    rows = max(1, block // max(ends.size, 1))
+    out = None
+    for r0 in range(0, max(xi.size, 1), rows):
+        r1 = min(r0 + rows, xi.size)
+        values = antiderivative(xi[r0:r1, None] - ends[None, :])
+        if out is None:
+            out = np.empty(values.shape[:-2] + (xi.size, n_out))
+        combine(values, out[..., r0:r1, :])
+    return out
 
 
 def _correction_splines(kernel, k_inf, w_all, z_all, n_modes):

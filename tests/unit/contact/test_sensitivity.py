@@ -181,3 +181,23 @@ def test_a_model_without_derivatives_is_differenced():
     # forward differences with steps of 1e-7 of the half-width carry the residuals' round-off
     # (about 1e-10) over the step: 2e-4 of the largest entry here
     assert np.allclose(J, J_fd, rtol=0, atol=1e-3 * np.abs(J).max())
+
+
+def test_batched_energy_releases_equal_one_edge_at_a_time():
+    """``energy_releases`` (all edges' solves and products at once) against ``energy_release``
+    of each edge alone, on the four rough contacts."""
+    adhesion = EnergyBalance(gamma=2.387e-7)
+    system = _system(ROUGH_EDGES, Control.penetration_of(0.35), profile=ROUGH, rheology=SLS,
+                     zeta=1e-2, adhesion=adhesion)
+    x = np.asarray(ROUGH_EDGES)
+    fields, ctx, _ = system.evaluate(x)
+    sens = FieldSensitivity(fields, system.prep.kernel, system.prep.shape, system.spec,
+                            system.zones, system.counts)
+    advances = []
+    for i in range(len(x)):
+        dx, slope = adhesion._advance_and_slope(ctx, i)
+        advances.append((i, dx, np.append(slope, 0.0)))
+    batched = sens.energy_releases(ctx, advances)
+    single = np.array([sens.energy_release(ctx, *a) for a in advances])
+    assert batched.shape == (len(x), len(x) + 1)
+    assert np.max(np.abs(batched - single)) < 1e-10 * np.max(np.abs(single))
