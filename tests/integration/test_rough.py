@@ -31,6 +31,7 @@ def test_rough_adhesionless(seed, zeta, p):
     assert np.all(edges[:, 1] > edges[:, 0]) and np.all(edges[1:, 0] > edges[:-1, 1])
 
 
+@pytest.mark.slow
 def test_rough_load_path_merges_and_detaches():
     """Penetration up then down, each step continued from the previous contact set."""
     prob = _problem(0, penetration=0.05, zeta=0.1)
@@ -108,6 +109,7 @@ def test_adhesionless_continuation_that_cycles_starts_afresh():
     assert not any(e.startswith("mesh refined in a contact whose tension") for e in events)
 
 
+@pytest.mark.slow
 def test_nonlinear_cg_on_the_rough_adhesionless_case_reaches_broydens_equilibrium():
     """Thesis rough profile (seed 0), adhesionless, ζ = 1e-2, p̃∞ = 0.3, from first touch: nonlinear
     CG reaches the equilibrium Broyden reaches (7 contacts). On the way, contacts about to merge

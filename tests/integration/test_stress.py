@@ -451,6 +451,7 @@ def test_failure_is_loud_and_carries_the_result():
     assert math.isfinite(r.iterations)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("zeta", [1e-2, 1.0, 1e2])
 def test_strong_adhesion_without_equilibrium_at_first_touch(zeta):
     """Γ̃ = 0.05, p̃∞ = 0.3, β = 10: at ζ = 1e-2 and 1 the first contact has no equilibrium at
