@@ -149,18 +149,6 @@ class KernelTable:
         return w, j, s
 
     @staticmethod
-    def _horner(coef, j, t, out=None):
-        c0, c1, c2, c3 = coef
-        out = c3.take(j, out=out)       # in place on contiguous gathers (see MemoryTable)
-        out *= t
-        out += c2.take(j)
-        out *= t
-        out += c1.take(j)
-        out *= t
-        out += c0.take(j)
-        return out
-
-    @staticmethod
     def _slope_horner(coef, j, t, out=None):
         d1, d2, d3 = coef
         out = d3.take(j, out=out)
@@ -184,19 +172,19 @@ class KernelTable:
     def antiderivative(self, x):
         """``F̃(x)`` (without the ``c0`` part)."""
         w, j, t = self._locate(x)
-        return self._add_singular(self._horner(self._f, j, t), w).reshape(np.shape(x))
+        return self._add_singular(horner(self._f, j, t), w).reshape(np.shape(x))
 
     def even(self, x):
         """``E(x) = F̃(x) + F̃(-x)``."""
         _, j, t = self._locate(x)
-        return self._horner(self._e, j, t).reshape(np.shape(x))
+        return horner(self._e, j, t).reshape(np.shape(x))
 
     def pair(self, x):
         """``[F̃(x), E(x)]`` stacked, sharing the interval search."""
         w, j, t = self._locate(x)
         out = np.empty((2,) + w.shape)
-        self._add_singular(self._horner(self._f, j, t, out[0]), w)
-        self._horner(self._e, j, t, out[1])
+        self._add_singular(horner(self._f, j, t, out[0]), w)
+        horner(self._e, j, t, out[1])
         return out.reshape((2,) + np.shape(x))
 
     def _singular_slope(self, w):
@@ -225,3 +213,18 @@ class KernelTable:
             out[0] += self._singular_slope(w)
         self._slope_horner(self._de, j, t, out[1])
         return out.reshape((2,) + np.shape(x))
+
+
+def horner(coef, j, t, out=None):
+    """``c0[j] + t (c1[j] + t (c2[j] + t c3[j]))`` for the cubic coefficients ``coef = (c0, c1,
+    c2, c3)`` of the intervals ``j`` at local coordinates ``t``, in place on contiguous gathers
+    (about twice the speed of gathering rows of an ``(n, 4)`` table); into ``out`` if given."""
+    c0, c1, c2, c3 = coef
+    out = c3.take(j, out=out)
+    out *= t
+    out += c2.take(j)
+    out *= t
+    out += c1.take(j)
+    out *= t
+    out += c0.take(j)
+    return out
