@@ -296,8 +296,6 @@ class FieldSensitivity:
         lam_n, rhs_b = [], np.empty((len(sig), m))
         for k, e in enumerate(edges):
             b = e.border
-            nb_, mb_ = slice(node_bounds[k], node_bounds[k + 1]), slice(mid_bounds[k],
-                                                                         mid_bounds[k + 1])
             h_n = b.right - b.left
             psi_n = -0.5 * h_n * b.w_new
             if dissipative:
@@ -311,22 +309,25 @@ class FieldSensitivity:
             ln = lu_solve(b.schur, psi_n - b.Y.T @ psi_b, trans=1, check_finite=False)
             lam_n.append(ln)
             rhs_b[:, k] = psi_b - b.r.T @ ln
-            e.spans = (nb_, mb_)
         lam = self.adjoint(np.column_stack([rhs_b, Psi]))                  # (N, 2M)
         lam_b, mu = lam[:, :m], lam[:, m:]
         base = mu.T @ self.rhs                                              # (M, D)
         LG_b = G_bb.T @ lam_b                                               # (K, M)
+        # the part of the explicit term that does not depend on the advance
+        explicit_base = 0.5 * (self.width_vel.T @ (sig * w) + self.w_vel.T @ (h * sig))
         out = np.empty((m, D))
         for k, e in enumerate(edges):
             b = e.border
-            nb_, mb_ = e.spans
+            # its columns among all new nodes and its rows among all new collocation points
+            nb_ = slice(node_bounds[k], node_bounds[k + 1])
+            mb_ = slice(mid_bounds[k], mid_bounds[k + 1])
             h_n = b.right - b.left
             s_old, s_new, s_b, s_n = b.s_old, b.s_new, e.s_b, e.s_n
             wv_n = self.shape.slopes(e.mid)[:, None] * e.colloc_vel
             wv_n[:, -1] = 1.0
             explicit = (-0.5 * (self.width_vel.T @ (s_old * w) + e.width_vel.T @ (s_new * b.w_new)
                                 + self.w_vel.T @ (h * s_old) + wv_n.T @ (h_n * s_new))
-                        + 0.5 * (self.width_vel.T @ (sig * w) + self.w_vel.T @ (h * sig)))
+                        + explicit_base)
             g_bn, g_nb, g_nn = G_bn[:, nb_], G_nb[mb_], G_nn[mb_, nb_]
             if dissipative:
                 cols, rows = b.cols, b.rows
@@ -377,5 +378,3 @@ class _Advance:
     width_vel: np.ndarray
     s_b: np.ndarray
     s_n: np.ndarray
-    #: its columns among all new nodes and its rows among all new collocation points
-    spans: tuple = ()
