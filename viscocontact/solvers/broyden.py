@@ -14,6 +14,10 @@ __all__ = ["Broyden", "InverseJacobian"]
 #: Relative size below which the Sherman-Morrison denominator ``sᵀHy`` counts as zero.
 DENOMINATOR_RTOL = 1e-12
 
+#: Progress that ``stall_iterations`` asks for: the best ``max|r|`` of the last iterations must
+#: fall below this fraction of the best before them.
+STALL_PROGRESS = 0.9
+
 
 def _merit(r: np.ndarray) -> float:
     return 0.5 * float(r @ r) if np.all(np.isfinite(r)) else float("inf")
@@ -74,6 +78,14 @@ class Broyden(FiniteDifferenceOptions, NonlinearSolver):
         A trial point whose residual is not finite is retried with half the step, at most this
         many times (then ``Status.DIVERGED``). Steps that merely increase the merit are
         accepted: Broyden has no line search.
+    stall_iterations : int
+        Stop with ``Status.STALLED`` when the best ``max|r|`` of the last ``stall_iterations``
+        iterations is not below :data:`STALL_PROGRESS` (0.9) times the best before them
+        (0: never). Without a line search, an iteration on a problem without a nearby root
+        (an edge system whose contact set has no equilibrium: a contact that must detach)
+        wanders or repeats a cycle of steps through its restarts until ``max_iterations``;
+        MINPACK's ``hybrd`` stops in the same way ("not making good progress ... from the last
+        ten iterations"). A caller with a fallback hands over at once.
 
     Notes
     -----
@@ -100,6 +112,7 @@ class Broyden(FiniteDifferenceOptions, NonlinearSolver):
     restart: bool = attrs.field(default=True, validator=boolean)
     restart_after: int = attrs.field(default=2, validator=int_range(1))
     max_halvings: int = attrs.field(default=10, validator=int_range(0, 60))
+    stall_iterations: int = attrs.field(default=30, validator=int_range(0))
 
     def _solve(self, problem: NonlinearProblem, x0: np.ndarray,
                tolerances: Tolerances) -> SolverResult:
@@ -123,6 +136,11 @@ class Broyden(FiniteDifferenceOptions, NonlinearSolver):
                     break
                 if it >= tolerances.max_iterations:
                     status, message = Status.MAX_ITERATIONS, f"{it} iterations"
+                    break
+                if self._stalled(history):
+                    status = Status.STALLED
+                    message = (f"no progress in {self.stall_iterations} iterations: the best "
+                               f"max|r| stayed at {min(history):.3g}")
                     break
                 s = -self.relaxation * H.solve(r)
                 if np.all(np.isfinite(s)):
@@ -161,3 +179,11 @@ class Broyden(FiniteDifferenceOptions, NonlinearSolver):
             status, message = Status.MAX_EVALUATIONS, f"{fun.count} residual evaluations"
         return result(x, r, tolerances, status, message, it, fun.count, history,
                       restarts=restarts, skipped_updates=skipped)
+
+    def _stalled(self, history: list[float]) -> bool:
+        """Whether the last ``stall_iterations`` entries of ``history`` (max|r| per iteration,
+        the start first) made no progress against the best before them."""
+        n = self.stall_iterations
+        if n == 0 or len(history) <= n:
+            return False
+        return min(history[-n:]) >= STALL_PROGRESS * min(history[:-n])

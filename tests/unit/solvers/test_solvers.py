@@ -114,6 +114,29 @@ def test_problem_without_root_is_not_converged(solver, x0):
     assert res.message
 
 
+@pytest.mark.parametrize("x0", [0.5, 0.0, -2.0])
+def test_broyden_stops_when_it_makes_no_progress(x0):
+    """Without a root Broyden wanders (no line search); ``stall_iterations`` ends it as STALLED
+    once the best residual stops falling, long before the iteration budget."""
+    tol = Tolerances(residual=1e-9, max_iterations=500, max_evaluations=100_000)
+    res = Broyden(stall_iterations=20).solve(NoRoot(), np.full(3, x0), tol)
+    assert res.status is Status.STALLED and not res.converged
+    assert 20 <= res.iterations < 60
+    assert "no progress in 20 iterations" in res.message
+    h = res.residual_history
+    assert min(h[-20:]) >= 0.9 * min(h[:-20])       # the rule, on the history it reports
+    off = Broyden(stall_iterations=0).solve(NoRoot(), np.full(3, x0), tol)
+    assert off.status is Status.MAX_ITERATIONS and off.iterations == 500
+
+
+def test_broyden_stall_rule_leaves_progressing_solves_alone():
+    """A slow but steady solve (heavy under-relaxation: linear convergence with ratio 0.9) is
+    not stopped: each window of iterations lowers the best residual by more than the rule's 0.9."""
+    problem = SMOOTH.as_problem(jacobian=True)
+    res = Broyden(relaxation=0.1, stall_iterations=5).solve(problem, SMOOTH_X0, TOL)
+    assert res.converged
+
+
 @pytest.mark.parametrize("solver", SOLVERS, ids=ids)
 def test_non_finite_residual_at_start_fails(solver):
     res = solver.solve(FunctionProblem(lambda x: np.full(2, np.nan)), np.zeros(2), TOL)
@@ -433,6 +456,7 @@ def test_bisection_growth_reaches_far_roots_quickly():
     (Bisection, {"shrink": 0.0}, "Bisection.shrink"),
     (Bisection, {"growth": 0.5}, "Bisection.growth"),
     (Bisection, {"patience": 0}, "Bisection.patience"),
+    (Broyden, {"stall_iterations": -1}, "Broyden.stall_iterations"),
 ])
 def test_bad_options_name_the_field(cls, kwargs, field):
     with pytest.raises(ValidationError, match=field):

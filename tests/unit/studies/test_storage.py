@@ -119,6 +119,27 @@ def test_existing_file_needs_resume_or_overwrite(tmp_path, sweep):
         run(sweep, path, progress=None)
 
 
+def test_resume_accepts_a_scene_stored_before_a_parameter_was_added(tmp_path, sweep):
+    """A file whose stored scene lacks a parameter a component gained since (its default now
+    applies) resumes; a scene that differs in a value does not."""
+    path = tmp_path / "s.h5"
+    storage.create(path, sweep)
+    text = storage.read_header(path)["scene"]
+    older = "\n".join(line for line in text.splitlines() if not line.startswith("relaxation"))
+    assert older != text and Scene.from_toml(older).to_toml() == text
+    with h5py.File(path, "r+") as f:
+        del f["scene"]
+        f["scene"] = older
+    run(sweep, path, resume=True, progress=None)
+    assert len(load_study(path)) == 3
+    changed = older.replace("zeta = ", "zeta = 2")
+    with h5py.File(path, "r+") as f:
+        del f["scene"]
+        f["scene"] = changed
+    with pytest.raises(ValidationError, match="scene"):
+        run(sweep, path, resume=True, progress=None)
+
+
 def test_resume_refuses_another_study(tmp_path, sweep):
     path = tmp_path / "s.h5"
     storage.create(path, sweep)
