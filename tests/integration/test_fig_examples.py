@@ -1,4 +1,4 @@
-"""The thesis-figure scripts (examples/fig_4_*.py, fig_pressure_gap.py) run in their hidden
+"""The thesis-figure scripts (examples/fig_4_*.py, fig_pressure_gap.py, cohesive_wavy.py) run in
 ``--tiny`` configuration and write study files with finite numbers and PNG figures."""
 import os
 import subprocess
@@ -147,3 +147,18 @@ def test_cli_plot_draws_a_figure_study(tmp_path):
     assert proc.returncode == 0, proc.stderr
     check_png(tmp_path / "plots" / "fields_wavy_area.png")
     check_png(tmp_path / "plots" / "fields_wavy_friction.png")
+
+
+@pytest.mark.slow
+def test_cohesive_wavy_tiny(tmp_path):
+    out = run_script("cohesive_wavy.py", tmp_path)
+    check_png(tmp_path / "cohesive_wavy.png")
+    data = check_sweep(tmp_path / "cohesive_wavy_md12.3nm_p0.3.h5")
+    assert data.scene.to_dict()["adhesion"]["kind"] == "maugis-dugdale"
+    check_sweep(tmp_path / "cohesive_wavy_dx1e-04_p0.3.h5")
+    # the zone lengths of the cohesive point: glassy, d/a0 below β = 10 at a finite contact
+    import csv
+    with (tmp_path / "zones_md12.3nm.csv").open() as f:
+        (row,) = csv.DictReader(f)
+    assert 5 < float(row["work_trailing"]) < 10 and 5 < float(row["work_leading"]) < 10
+    assert "h0 = 12.3 nm vs δX = 0.0001" in out
