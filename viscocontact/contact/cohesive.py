@@ -35,6 +35,8 @@ NOISE = 1e-8
 EDGE_STEP = 1e-12
 #: Newton iterations before giving up.
 ITERATIONS = 60
+#: Largest growth factor of a zone's ``√d`` in one Newton iteration.
+GROWTH = 1.5
 #: Zones are kept this fraction of the free interval short of meeting their neighbour.
 ROOM = 1.0 - 1e-9
 
@@ -135,6 +137,9 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
 
     t = np.sqrt(np.clip(np.asarray(start, dtype=float), 0.0, 0.5 * free))
     half = 0.5 * float(np.mean(edges[1::2] - edges[0::2]))
+    # the last positive √d of each zone (a zone whose Newton step went past zero is closed at
+    # once; if its edge is then tensile, it reopens at a fraction of this)
+    before = t.copy()
     fields, k = evaluate(t)
     capped = np.zeros(n, bool)
     last = np.inf
@@ -147,6 +152,17 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
         if size <= NOISE * scale and size > 0.5 * last:
             return fields                 # at the fit's round-off: no longer decreasing
         last = size
+        reopen = (t == 0.0) & (k > 0.0)
+        if np.any(reopen):
+            # an edge without a zone whose stress is tensile: its zone opens, at a fraction of
+            # the zone it had (the root lies between) or else at Dugdale's short zone
+            # d = πK²/(8σ0²). Newton cannot start from zero: a zone far below the edge element
+            # leaves K̃ unchanged to round-off, so its differenced derivative vanishes
+            seed = np.where(before > 0.0, 0.3 * before, np.sqrt(np.pi / 8.0) * k / stress)
+            t = np.where(reopen, np.minimum(seed, np.sqrt(0.5 * free)), t)
+            before = np.where(reopen, t, before)
+            fields, k = evaluate(t)
+            continue
         idx = np.flatnonzero(active)
         J = np.empty((idx.size, idx.size))
         for col, j in enumerate(idx):
@@ -170,10 +186,18 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
             raise ZoneError("the bounded-stress equations of the zones gave a non-finite step")
         new = t.copy()
         new[idx] = t[idx] + step
-        # a step past zero shrinks the zone to a tenth of its length (an edge whose stress is
-        # compressive without a zone ends at zero through the active set)
-        new = np.where(new < 0.0, np.where(t > 1e-9 * max(float(np.max(t)), 1e-300), 0.3 * t,
-                                           0.0), new)
+        # a step past zero closes the zone: an edge whose stress is compressive without a zone
+        # stays at zero through the active set, a tensile one reopens it (above). Shrinking it
+        # by a factor per iteration instead left zones far below the edge element, where
+        # K̃ no longer changes with them: the guard against long zones then took every iteration
+        # (rough profile, an edge turning compressive at an approach step: 60 iterations spent)
+        before = np.where(t > 0.0, t, before)
+        new = np.where(new < 0.0, 0.0, new)
+        # at most GROWTH times longer in √d per iteration: K̃ flattens towards its minimum in
+        # the zone length, so a Newton step from short zones overshoots the root (sinusoid,
+        # load control, Γ̃ = 1e-3, η = 0.2: √d from 0.50 to 1.38 against a root at 0.65, where
+        # the zones filled the gap and were reported as meeting)
+        new = np.where(t > 0.0, np.minimum(new, GROWTH * t), new)
         d = new * new
         over = d + d[partner] > free
         if np.any(over):

@@ -8,7 +8,7 @@ import pytest
 
 from viscocontact import _registry
 from viscocontact.adhesion import AdhesionModel, MaugisDugdale
-from viscocontact.contact.cohesive import room, tips, zone_fields, zone_loads
+from viscocontact.contact.cohesive import intensity, room, tips, zone_fields, zone_loads
 from viscocontact.contact.fields import NormalizedProfile, solve_fields, stress_intensity
 from viscocontact.contact.mesh import MeshSpec, build_mesh
 from viscocontact.errors import ValidationError
@@ -87,6 +87,36 @@ def test_zones_of_the_reference_edges_are_the_reference_zones(lam):
     near = slice(0, 20)
     exact = ref.stress(f.mesh.mid[near], state.area, zone_angle=state.zone_angle)
     assert np.max(np.abs(f.sigma[near] - exact)) < 1e-2 * model.strength(0.1)
+
+
+def test_a_zone_whose_edge_turns_compressive_closes_while_the_other_converges():
+    """At fixed edges one edge compressive without a zone (``K̃ < 0`` at ``d = 0``), the other
+    tensile: the first zone closes and the second bounds its stress. (A zone stepped past zero
+    used to shrink by a factor per iteration until, far below the edge element, ``K̃`` no longer
+    changed with it and the guard against long zones took every iteration: no convergence in
+    60 iterations; the rough profile's approach ended there.)"""
+    ref, state, model, kernel, shape, _ = _reference_field(10.0)
+    a = 0.5 * state.area
+    mesh = build_mesh(np.array([-a + 0.9, a + 0.9]), MeshSpec(elements=128, smallest=1e-4))
+    d = state.penetration + 0.25
+    base = solve_fields(mesh, kernel, shape, penetration=d)
+    k0 = intensity(base)
+    assert k0[0] < 0 < k0[1]
+    f = zone_fields(base, kernel, stress=model.strength(0.1), control={"penetration": d},
+                    start=np.full(2, model.quasi_static_zone))
+    k = intensity(f)
+    assert f.loads.width[0] == 0.0 and k[0] < 0
+    assert f.loads.width[1] > 0.5 * model.quasi_static_zone
+    assert abs(k[1]) < 1e-8 * model.strength(0.1)
+
+
+def test_zones_open_from_none():
+    """Started without zones at tensile edges, the zones open (at Dugdale's short zone
+    ``πK̃²/(8σ̃0²)``) and reach the reference's."""
+    ref, state, model, kernel, shape, base = _reference_field(10.0)
+    f = zone_fields(base, kernel, stress=model.strength(0.1), control={
+        "penetration": state.penetration}, start=np.zeros(2))
+    assert np.allclose(f.loads.width, state.zone_width, rtol=2e-3)
 
 
 def test_zone_loads_and_room():

@@ -88,6 +88,7 @@ class Path:
         d_end = None if target.is_load else target.value
         step = self.path_step
         peak = (-np.inf, d0)              # the largest load along the branch, and where
+        below = None                      # the converged state before the last one
         while True:
             fields = state.fields
             if fields.mean_pressure > peak[0]:
@@ -100,6 +101,15 @@ class Path:
                     if jump is not None:
                         log.event("contact jumped at the target load")
                         return jump
+                if final.outcome is Outcome.NOT_CONVERGED and below is not None:
+                    # the last step overshot the target load to edges where the model has no
+                    # field at the target (Maugis-Dugdale: no zone lengths bound the stress
+                    # under the target load at edges wider than its equilibrium); the state
+                    # below the target brackets it from the other side
+                    retry = eq.solve(below.edges, target)
+                    if retry.outcome is Outcome.CONVERGED:
+                        log.event("the target load solved from the last state below it")
+                        return retry
                 return final
             if d_end is not None and abs(d_end - d_prev) <= 1e-15:
                 return state
@@ -115,6 +125,7 @@ class Path:
                              refine=d_next == d_end, polish=d_next == d_end)
             if trial.outcome is Outcome.CONVERGED:
                 step = self.next_step(step, start, state.edges, trial.edges)
+                below = state
                 state, d_prev = trial, d_next
                 continue
             if trial.outcome is Outcome.FULL_CONTACT:
