@@ -128,6 +128,10 @@ def sweep_arguments(parser: argparse.ArgumentParser, default_dx: str = "0,1e-4,1
     parser.add_argument("--seeds", default=None, help="override the seeds (0,1 or 0:20)")
     parser.add_argument("--pressures", default=None, help="override the p̃∞ list")
     parser.add_argument("--penetrations", default=None, help="override the Δ̃ list")
+    parser.add_argument("--zeta-step", type=float, default=None, metavar="DECADES",
+                        help="adhesive sweeps: a slow change of speed, with intermediate "
+                             "equilibria at most this many decades of ζ apart (default: one "
+                             "step per point); the files get a _step<DECADES> tag")
 
 
 def sweep_family(profile: str, control: str, args) -> list:
@@ -151,10 +155,12 @@ def sweep_family(profile: str, control: str, args) -> list:
         sweep = Sweep(scene=adhesionless_scene(profile), **common)
         path = Path(args.out) / f"sweep_{profile}_{control}_none.h5"
         out.append((None, compute(sweep, path, args)))
+    step = getattr(args, "zeta_step", None)
     for i, dx in enumerate(dxs):
-        sweep = Sweep(scene=scene(profile, edge_perturbation=dx),
+        sweep = Sweep(scene=scene(profile, edge_perturbation=dx), zeta_step=step,
                       pair=(i == 0 and profile not in SEPARATE_ADHESIONLESS), **common)
-        path = Path(args.out) / f"sweep_{profile}_{control}_{dx_tag(dx)}.h5"
+        tag = dx_tag(dx) + ("" if step is None else f"_step{step:g}")
+        path = Path(args.out) / f"sweep_{profile}_{control}_{tag}.h5"
         out.append((dx, compute(sweep, path, args)))
     return out
 

@@ -16,7 +16,8 @@ The load-controlled sweeps are the same files as those of ``fig_4_7.py``
 only reads them. Writes ``fig_4_10.png``.
 
 Usage: ``python examples/fig_4_10.py [--out DIR] [--full] [--workers N]
-[--edge-perturbations 0,1e-4,1e-3] [--zetas 1e-3,1]``
+[--edge-perturbations 0,1e-4,1e-3] [--zetas 1e-3,1] [--zeta-step 0.05]`` (``--zeta-step``: the
+adhesive curves on a slow change of speed, see ``docs/figures.md``, "Fig. 4.10 at full size")
 """
 from __future__ import annotations
 

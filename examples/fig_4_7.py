@@ -21,7 +21,9 @@ Writes ``sweep_<profile>_<control>_dx<δX>.h5`` (shared with ``fig_4_10.py``: a 
 ``--out`` is completed, not recomputed) and ``fig_4_7_rough.png``, ``fig_4_7_wavy.png``.
 
 Usage: ``python examples/fig_4_7.py [--out DIR] [--full] [--workers N]
-[--edge-perturbations 0,1e-4,1e-3] [--profiles rough,wavy] [--zetas 1e-3,1]``
+[--edge-perturbations 0,1e-4,1e-3] [--profiles rough,wavy] [--zetas 1e-3,1]
+[--zeta-step 0.05]`` (``--zeta-step``: the adhesive curves on a slow change of speed, see
+``docs/figures.md``, "Which equilibrium: the history of a point")
 """
 from __future__ import annotations
 
