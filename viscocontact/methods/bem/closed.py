@@ -61,14 +61,14 @@ class ClosedContact:
     def supports(self, mean_pressure: float) -> bool:
         """Whether full contact carries ``mean_pressure`` with no tension above the interface's
         strength (none without adhesion; always with adhesion of vanishing range)."""
-        if self.adhesive and self.strength == np.inf:
+        if self.strength == np.inf:      # adhesion of vanishing range
             return True
         return self.largest_tension(mean_pressure) <= self.strength
 
     def holds(self, control: Control) -> bool:
         """Whether a closed contact stays closed under ``control`` (while its tension stays
         within the interface's strength: none without adhesion)."""
-        if self.adhesive and self.strength == np.inf:
+        if self.strength == np.inf:      # adhesion of vanishing range
             return True
         if control.is_load:
             return self.supports(control.value)
