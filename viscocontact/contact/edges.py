@@ -32,82 +32,10 @@ import functools
 import attrs
 import numpy as np
 
+from .calibration import sif_calibration
 from .fields import FieldSolution, NormalizedProfile, stress_intensity
 from .mesh import ALIGN_MAX, ZONE_CAP, Mesh, MeshSpec, build_mesh, element_counts
 from ..kernels.prepared import element_integrals
-
-
-_CAL_ALPHA = np.concatenate([np.geomspace(1e-3, 0.5, 12), np.linspace(0.6, 3.1, 14)])
-_CAL_REL = np.geomspace(1e-9, ZONE_CAP, 7)
-
-
-def _fitted_ratio(pk, spec: MeshSpec, a: float) -> float:
-    mesh = build_mesh(np.array([-a, a]), spec)
-    B = pk.influence(mesh.mid, mesh.left, mesh.right)
-    sigma = np.linalg.solve(B, np.ones(len(mesh.mid)))
-    k_exact = np.sqrt(2 * np.pi / np.tan(a / 2)) / (2 * np.log(np.sin(a / 2)))
-    return float(stress_intensity(mesh, sigma)[1] / k_exact)
-
-
-@functools.lru_cache(maxsize=32)
-def _calibration_table(elements: int, exponent: float, grading: float, zones: bool):
-    """Interpolant of the fitted/exact ratio over log(half-width) (and log(h0/α) with zones),
-    computed with single-threaded BLAS so that the cached table is the same in every process."""
-    from .._blas import single_blas_thread
-
-    with single_blas_thread():
-        return _build_calibration_table(elements, exponent, grading, zones)
-
-
-def _build_calibration_table(elements, exponent, grading, zones):
-    from scipy.interpolate import PchipInterpolator
-
-    from ..kernels.half_plane import HalfPlane
-    from ..rheology.elastic import Elastic
-
-    pk = HalfPlane().prepare(Elastic(), 0.0)
-    if not zones:
-        spec = MeshSpec(elements=elements, exponent=exponent, grading=grading)
-        ratios = [_fitted_ratio(pk, spec, a) for a in _CAL_ALPHA]
-        return PchipInterpolator(np.log(_CAL_ALPHA), np.array(ratios), extrapolate=True)
-    ratios = [[_fitted_ratio(pk, MeshSpec(elements=elements, exponent=exponent, grading=grading,
-                                          smallest=rel * a), a) for rel in _CAL_REL]
-              for a in _CAL_ALPHA]
-    return _Bilinear(np.log(_CAL_ALPHA), np.log(_CAL_REL), np.array(ratios))
-
-
-class _Bilinear:
-    """Bilinear interpolation on a rectangular grid (the arithmetic of scipy's
-    ``RegularGridInterpolator(method="linear")`` without its per-call overhead, which was a
-    sixth of a residual evaluation); points are clipped to the grid beforehand."""
-
-    def __init__(self, x0: np.ndarray, x1: np.ndarray, values: np.ndarray):
-        self.x0, self.x1, self.values = x0, x1, values
-
-    def __call__(self, points: np.ndarray) -> np.ndarray:
-        p0, p1 = points[:, 0], points[:, 1]
-        i = np.clip(np.searchsorted(self.x0, p0, side="right") - 1, 0, len(self.x0) - 2)
-        j = np.clip(np.searchsorted(self.x1, p1, side="right") - 1, 0, len(self.x1) - 2)
-        t = (p0 - self.x0[i]) / (self.x0[i + 1] - self.x0[i])
-        u = (p1 - self.x1[j]) / (self.x1[j + 1] - self.x1[j])
-        v = self.values
-        return ((1 - t) * ((1 - u) * v[i, j] + u * v[i, j + 1])
-                + t * ((1 - u) * v[i + 1, j] + u * v[i + 1, j + 1]))
-
-
-def sif_calibration(spec: MeshSpec, half_width, first=None) -> np.ndarray:
-    """Ratio of fitted to exact K̃ for the homogeneous single-contact elastic field
-    ``cos(x/2)/√(s² - sin²(x/2))`` on a contact of the given half-width (mesh of the same spec;
-    ``first``: the edge element's size over the half-width, with edge zones)."""
-    table = _calibration_table(spec.elements, spec.exponent, spec.grading,
-                               spec.smallest is not None)
-    hw = np.clip(np.asarray(half_width, dtype=float), _CAL_ALPHA[0], _CAL_ALPHA[-1])
-    if spec.smallest is None:
-        return table(np.log(hw))
-    if first is None:
-        first = spec.smallest / np.asarray(half_width, dtype=float)
-    rel = np.clip(first, _CAL_REL[0], _CAL_REL[-1])
-    return table(np.column_stack([np.log(hw), np.log(rel)]))
 
 
 def _antisymmetric_block(even_antiderivative, row_left, row_right, col_left, col_right):

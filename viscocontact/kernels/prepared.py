@@ -311,6 +311,21 @@ def branch_regimes(memory_lengths, tolerance: float | None = None) -> np.ndarray
 BLOCK_SIZE = 1 << 14
 
 
+def _table_parts(antiderivative):
+    """``(table, parts)`` when ``antiderivative`` is :meth:`PreparedKernel.antiderivative`,
+    ``antiderivative_pair`` or ``even_antiderivative`` of a kernel with a combined table (a
+    subclass that overrides one of them keeps its own), else None."""
+    owner = getattr(antiderivative, "__self__", None)
+    if not isinstance(owner, PreparedKernel) or owner.table is None:
+        return None
+    parts = _TABLE_PARTS.get(getattr(antiderivative, "__func__", None))
+    return None if parts is None else (owner.table, parts)
+
+
+_TABLE_PARTS = {PreparedKernel.antiderivative: "F", PreparedKernel.antiderivative_pair: "FE",
+                PreparedKernel.even_antiderivative: "E"}
+
+
 def element_integrals(antiderivative, points, left, right, block: int = BLOCK_SIZE) -> np.ndarray:
     """``F(ξ_l - a_q) - F(ξ_l - b_q)`` for an antiderivative ``F``: integrals over elements.
 
@@ -321,7 +336,15 @@ def element_integrals(antiderivative, points, left, right, block: int = BLOCK_SI
     several functions stacked along leading axes (shape ``(k,) + x.shape``, e.g.
     :meth:`PreparedKernel.antiderivative_pair`); so does the result. ``F`` is called on blocks
     of rows of about ``block`` points each (the result does not depend on it).
+
+    The table-backed antiderivatives of a :class:`PreparedKernel` go to the compiled loop
+    (:meth:`KernelTable.element_integrals`), the same values up to rounding at about a third of
+    the cost.
     """
+    compiled = _table_parts(antiderivative)
+    if compiled is not None:
+        table, parts = compiled
+        return table.element_integrals(points, left, right, parts)
     xi = np.asarray(points, dtype=float)
     a = np.asarray(left, dtype=float)
     b = np.asarray(right, dtype=float)

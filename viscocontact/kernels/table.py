@@ -30,6 +30,21 @@ from .clausen import TWO_PI, cl2_smooth, wrap
 _TINY = np.finfo(float).tiny
 
 
+def _buckets(nodes, per_node: float = 4.0):
+    """The start of the compiled loop's interval search: ``(first, u0, inverse_width)`` for a
+    grid uniform in ``u = log|x|`` from the smallest positive node to π, with ``per_node`` buckets
+    per positive node, and per bucket edge the index (among the positive nodes ``nodes[c:]``, ``c``
+    the index of 0) of the interval that holds it. Logarithmic buckets suit both parts of the
+    grid: geometric towards 0 and about uniform (a node every 2e-3) away from it."""
+    positive = nodes[nodes >= 0.0]
+    u0 = np.log(positive[1])
+    count = max(1, int(per_node * len(positive)))
+    width = (np.log(np.pi) - u0) / count
+    edges = np.exp(u0 + width * np.arange(count + 1))
+    first = np.searchsorted(positive, edges, side="right") - 1
+    return np.clip(first, 0, len(positive) - 2).astype(np.intp), float(u0), 1.0 / width
+
+
 def _taylor_at(c, t0, r):
     """Coefficients in ``s`` of ``p(t0 + r s)`` for cubics ``p(t) = Σ c_k t^k`` (4 arrays ``c``)."""
     c0, c1, c2, c3 = c
@@ -81,6 +96,13 @@ class KernelTable:
         # slopes: d/dx of the cubics in t, the powers' factors and 1/h folded in
         self._df = tuple(np.ascontiguousarray(k * c / widths) for k, c in zip((1, 2, 3), odd[1:]))
         self._de = tuple(np.ascontiguousarray(k * c / widths) for k, c in zip((1, 2, 3), even[1:]))
+        # the compiled loop's layout: one row of 9 per interval (a cache line and a word)
+        self._coef = np.ascontiguousarray(np.column_stack(self._f + self._e + (1.0 / widths,)))
+        self._zero = int(np.searchsorted(nodes, 0.0))
+        if not (nodes[self._zero] == 0.0 and np.array_equal(nodes[self._zero:][::-1],
+                                                          -nodes[:self._zero + 1])):
+            raise ValueError("a kernel table's grid must be symmetric about 0, with 0 a node")
+        self._buckets = _buckets(nodes)
 
     @classmethod
     def build(cls, instantaneous: float, weights, tables, correction=None) -> "KernelTable":
@@ -133,6 +155,27 @@ class KernelTable:
         odd = [c / np.pi for c in odd]
         even = [c / np.pi for c in even]
         return cls(y, odd, even, instantaneous / np.pi)
+
+    # ---- influence coefficients --------------------------------------------------------------
+    def element_integrals(self, points, left, right, parts: str = "F"):
+        """``V(ξ_l - a_q) - V(ξ_l - b_q)`` for ``V`` = ``F̃`` (``parts="F"``), ``E`` (``"E"``) or
+        both stacked (``"FE"``), by the compiled loop of :mod:`._compiled`: the same values as
+        :func:`~viscocontact.kernels.prepared.element_integrals` with :meth:`antiderivative`,
+        :meth:`even` or :meth:`pair`, up to rounding."""
+        from . import _compiled
+
+        xi = np.ascontiguousarray(np.ravel(points), dtype=float)
+        a = np.ravel(np.asarray(left, dtype=float))
+        b = np.ravel(np.asarray(right, dtype=float))
+        ends, where = np.unique(np.concatenate([a, b]), return_inverse=True)
+        where = where.ravel().astype(np.intp)
+        out = np.empty((len(parts), xi.size, a.size))
+        empty = np.empty((0, 0))
+        out_f = out[parts.index("F")] if "F" in parts else empty
+        out_e = out[parts.index("E")] if "E" in parts else empty
+        _compiled.integrals(xi, ends, where[:a.size], where[a.size:], self.nodes,
+                            self._zero, *self._buckets, self._coef, self.singular, out_f, out_e)
+        return out if len(parts) > 1 else out[0]
 
     # ---- look-ups ---------------------------------------------------------------------------
     def _locate(self, x):

