@@ -17,6 +17,8 @@ compiles for a few seconds, later processes load the machine code (about half a 
 """
 from __future__ import annotations
 
+from typing import Callable, cast
+
 import numpy as np
 from numba import njit
 
@@ -60,7 +62,7 @@ def _interval(x, lg, nodes, zero, first, u0, inverse_width):
 
 
 @njit(cache=True, nogil=True)
-def integrals(points, ends, lo, hi, nodes, zero, first, u0, inverse_width, coef, singular,
+def _integrals(points, ends, lo, hi, nodes, zero, first, u0, inverse_width, coef, singular,
               out_f, out_e):
     """``out[l, q] = V(ξ_l - ends[lo_q]) - V(ξ_l - ends[hi_q])`` for ``V = F̃`` into ``out_f`` and
     ``V = E`` into ``out_e`` (either may have size 0: not wanted).
@@ -108,3 +110,7 @@ def integrals(points, ends, lo, hi, nodes, zero, first, u0, inverse_width, coef,
         if want_e:
             for q in range(lo.size):
                 out_e[row, q] = ve[lo[q]] - ve[hi[q]]
+
+
+#: :func:`_integrals` as the callers see it (numba's dispatcher types its call as argument-free)
+integrals = cast(Callable[..., None], _integrals)
