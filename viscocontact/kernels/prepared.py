@@ -338,8 +338,8 @@ def element_integrals(antiderivative, points, left, right, block: int = BLOCK_SI
     of rows of about ``block`` points each (the result does not depend on it).
 
     The table-backed antiderivatives of a :class:`PreparedKernel` go to the compiled loop
-    (:meth:`KernelTable.element_integrals`), the same values up to rounding at about a third of
-    the cost.
+    (:meth:`KernelTable.element_integrals`): the same values up to rounding, 1.2-1.5 times
+    faster on the meshes of a rough solve (``benchmarks/influence_loop.py``).
     """
     compiled = _table_parts(antiderivative)
     if compiled is not None:
