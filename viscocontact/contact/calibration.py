@@ -20,6 +20,7 @@ import functools
 
 import numpy as np
 
+from .._files import write_atomic
 from .fields import stress_intensity
 from .mesh import ZONE_CAP, MeshSpec, build_mesh
 
@@ -122,18 +123,11 @@ def write_shipped(path) -> None:
             values = ", ".join(repr(float(v)) for v in row)
             lines.append(f"        [{values}]," if key[3] else f"        {values},")
         lines.append("    ],")
-    lines.append("}")
-    lines.append("")
-    import os
-    import tempfile
-
-    directory = os.path.dirname(os.path.abspath(path))
-    with tempfile.NamedTemporaryFile("w", dir=directory, delete=False, suffix=".tmp") as f:
-        f.write("\n".join(lines))
-    os.replace(f.name, path)
+    lines += ["}", ""]
+    write_atomic(path, "\n".join(lines).encode())
 
 
 if __name__ == "__main__":
-    import os
+    from pathlib import Path
 
-    write_shipped(os.path.join(os.path.dirname(os.path.abspath(__file__)), "_calibration_data.py"))
+    write_shipped(Path(__file__).resolve().with_name("_calibration_data.py"))

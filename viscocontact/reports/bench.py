@@ -40,6 +40,7 @@ from typing import Any
 import attrs
 import numpy as np
 
+from .._files import write_atomic
 from ..errors import TimeLimitExceeded, ValidationError
 
 BETA = 10.0
@@ -277,20 +278,6 @@ def run_plan(plan: Plan, suite: Path, log=lambda message: None) -> tuple[list[di
         add_errors(case_rows, refs[name], mu_floor)
         rows += case_rows
     return rows, refs
-
-
-def write_atomic(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` through a temporary file in the same folder."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        with contextlib.suppress(FileNotFoundError):
-            os.unlink(tmp)
-        raise
 
 
 def _fmt(value) -> str:

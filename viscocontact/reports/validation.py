@@ -39,6 +39,8 @@ from pathlib import Path
 import attrs
 import numpy as np
 
+from .._files import publish
+
 #: Thesis §3.4 (after Carbone et al. 2009): for 1D roughness Persson's theory gives about half the
 #: BEM contact area. The report measures ``A_Persson/A_BEM`` and sets it beside this.
 THESIS_PERSSON_RATIO = 0.5
@@ -976,20 +978,12 @@ def _plain_ticks(axis, ticks=None) -> None:
     axis.set_minor_formatter(ticker.NullFormatter())
 
 
-def _publish(tmp: str, path: Path) -> None:
-    """Give ``tmp`` the mode of a newly created file (mkstemp makes it 0600), then move it."""
-    umask = os.umask(0)
-    os.umask(umask)
-    os.chmod(tmp, 0o666 & ~umask)
-    os.replace(tmp, path)
-
-
 def _save(fig, path: Path) -> Path:
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.stem}.", suffix=".png")
     os.close(fd)
     try:
         fig.savefig(tmp, format="png", dpi=120, bbox_inches="tight")
-        _publish(tmp, path)
+        publish(tmp, path)
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
@@ -1138,7 +1132,7 @@ def _write_text(path: Path, text: str) -> None:
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as fh:
             fh.write(text)
-        _publish(tmp, path)
+        publish(tmp, path)
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
