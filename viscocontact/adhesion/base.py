@@ -17,7 +17,9 @@ Contract for implementers
    energy release (``dfields.energy_release(ctx, i, dx, ddx)``) and any linear functional of the
    stresses (``dfields.linear``) through the factorisation already at hand. The solvers then get
    the Jacobian for about the cost of one residual; the default (``None``) makes the orchestrator
-   difference the residuals instead (two to ``n_edges`` extra evaluations per Jacobian).
+   difference the residuals instead (two to ``n_edges`` extra evaluations per Jacobian). A model
+   whose own loads (item 5) count in the load also gives :meth:`pressure_derivatives`, so that
+   load control and the path's tangent hold the right load.
 
 5. Optionally, :meth:`field_solution` computes the field of a contact mesh itself (the default is
    :func:`~viscocontact.contact.fields.solve_fields`, contact stresses only). A finite-range model
@@ -114,6 +116,12 @@ class AdhesionModel(abc.ABC):
         """``∂r_i/∂X_j`` at fixed penetration and ``∂r_i/∂Δ̃`` at fixed edges, shape
         ``(n_edges, n_edges + 1)`` (the penetration last), or None when the model does not
         provide them (contract item 4)."""
+        return None
+
+    def pressure_derivatives(self, ctx, dfields) -> np.ndarray | None:
+        """``∂p̃∞/∂X_j`` at fixed penetration and ``∂p̃∞/∂Δ̃`` at fixed edges (``n_edges + 1``)
+        when the model's own loads (contract item 5) count in the load and change with the
+        edges; None (the default): the contact stresses' alone (``dfields.pressure()``)."""
         return None
 
     def field_solution(self, mesh, kernel, shape, control: dict, *, antisymmetric: bool = False,

@@ -35,7 +35,7 @@ import attrs
 import numpy as np
 
 from .._validation import in_range
-from ..contact.cohesive import ZoneError, intensity, tips, zone_fields
+from ..contact.cohesive import ZoneError, intensity, tips, zone_derivatives, zone_fields
 from .base import AdhesionLimitation, AdhesionModel, EdgeTerms
 
 #: Resolved length of the edge mesh as a fraction of the quasi-static zone ``h̃0²/(4γ̃)``.
@@ -151,6 +151,36 @@ class MaugisDugdale(AdhesionModel):
         k = self.intensity(ctx)
         return (self.critical_intensity(ctx.amplitude) * (np.sqrt(np.maximum(g, 0.0)) - 1.0)
                 + np.minimum(np.where(ctx.fields.loads.width > 0, 0.0, k), 0.0))
+
+    def residual_derivatives(self, ctx, dfields) -> np.ndarray:
+        """The derivatives of :meth:`residuals` in every edge and the penetration along the
+        zones' own equations (:func:`~viscocontact.contact.cohesive.zone_derivatives`): at a
+        zone ``K̃_c ġ/(2√(g̃ η))``, at an edge without a zone its compressive ``K̃``'s."""
+        if self.gamma == 0:
+            return dfields.stress_intensity()
+        z = self._zone_derivatives(ctx, dfields)
+        g = self.tip_gaps(ctx)
+        zone = ctx.fields.loads.width > 0
+        k = self.intensity(ctx)
+        eta = self.opening(ctx.amplitude)
+        root = np.sqrt(np.where(zone & (g > 0), g, 1.0))
+        rate = np.where(zone & (g > 0), self.critical_intensity(ctx.amplitude) / (2 * root * eta),
+                        0.0)
+        return np.where(zone[:, None], rate[:, None] * z.gaps,
+                        np.where((k < 0)[:, None], z.intensity, 0.0))
+
+    def pressure_derivatives(self, ctx, dfields) -> np.ndarray | None:
+        """``∂p̃∞`` with the zones' force, their lengths following the edges."""
+        if self.gamma == 0 or ctx.fields.loads is None:
+            return None
+        return self._zone_derivatives(ctx, dfields).pressure
+
+    def _zone_derivatives(self, ctx, dfields):
+        key = ("maugis-dugdale", id(ctx.fields))
+        if key not in dfields.memo:
+            dfields.memo[key] = zone_derivatives(ctx.fields, dfields,
+                                                 stress=self.strength(ctx.amplitude))
+        return dfields.memo[key]
 
     def zone_lengths(self, ctx) -> np.ndarray:
         """Length of the zone at every edge (zeros without adhesion)."""

@@ -225,29 +225,36 @@ def stress_intensity(mesh: Mesh, values: np.ndarray, powers=_POWERS) -> np.ndarr
     return out
 
 
+def edge_rows(nodes: np.ndarray, powers=_POWERS) -> tuple[np.ndarray, np.ndarray]:
+    """The weights of one contact's fit (nodes ``z_0 < ... < z_m``, the edges at the ends):
+    ``K̃ = w_l·σ̃[:n]`` at its left edge and ``w_r·σ̃[m - n:]`` at its right one, ``n`` the
+    fitted elements of :func:`stress_intensity`."""
+    left, right = nodes[:-1], nodes[1:]
+    n_fit = max(min(N_FIT, max(3, len(left) // 2)), len(powers))
+    xl, xr = nodes[0], nodes[-1]
+
+    def first_row(ra, rb):
+        A = np.column_stack([_avg_power(ra[:n_fit], rb[:n_fit], p) for p in powers])
+        scale = np.linalg.norm(A, axis=0)
+        return np.linalg.pinv(A / scale)[0] / scale[0] * np.sqrt(2 * np.pi)
+
+    return (first_row(left - xl, right - xl),
+            first_row((xr - right)[::-1], (xr - left)[::-1])[::-1])
+
+
 def intensity_matrix(mesh: Mesh, powers=_POWERS) -> np.ndarray:
     """The rows ``W`` (shape ``(2 N_c, N)``) with ``K̃ = W σ̃`` at every edge: the fit of
     :func:`stress_intensity` is linear in the element values, so its first coefficient is a
-    fixed combination of the ``n_fit`` values next to each edge (the same column scaling; the
-    pseudo-inverse instead of the least-squares solver, equal to round-off). For a field
-    evaluated many times on one mesh, and for the derivatives of ``K̃`` (``W`` times the
-    derivatives of ``σ̃``)."""
+    fixed combination of the ``n_fit`` values next to each edge (:func:`edge_rows`: the same
+    column scaling; the pseudo-inverse instead of the least-squares solver, equal to
+    round-off). For a field evaluated many times on one mesh, and for the derivatives of ``K̃``
+    (``W`` times the derivatives of ``σ̃``)."""
     out = np.zeros((2 * mesh.n_contacts, len(mesh.left)))
-    root = np.sqrt(2 * np.pi)
-
-    def first_row(ra, rb, n_fit):
-        A = np.column_stack([_avg_power(ra[:n_fit], rb[:n_fit], p) for p in powers])
-        scale = np.linalg.norm(A, axis=0)
-        return np.linalg.pinv(A / scale)[0] / scale[0] * root
-
     for j in range(mesh.n_contacts):
         sl = mesh.slice(j)
-        a, b = mesh.left[sl], mesh.right[sl]
-        xl, xr = mesh.edges[2 * j], mesh.edges[2 * j + 1]
-        n_fit = max(min(N_FIT, max(3, len(a) // 2)), len(powers))
-        out[2 * j, sl.start:sl.start + n_fit] = first_row(a - xl, b - xl, n_fit)
-        out[2 * j + 1, sl.stop - n_fit:sl.stop] = first_row(
-            (xr - b)[::-1], (xr - a)[::-1], n_fit)[::-1]
+        wl, wr = edge_rows(np.append(mesh.left[sl], mesh.right[sl][-1]), powers)
+        out[2 * j, sl.start:sl.start + len(wl)] = wl
+        out[2 * j + 1, sl.stop - len(wr):sl.stop] = wr
     return out
 
 

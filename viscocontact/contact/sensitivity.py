@@ -34,7 +34,7 @@ from scipy.linalg import lu_solve
 
 from ..kernels.prepared import pairwise
 from .edges import Border, sif_calibration
-from .fields import _POWERS, N_FIT, _avg_power
+from .fields import _POWERS, N_FIT, _avg_power, edge_rows
 from .mesh import contact_spec, element_counts, graded_nodes
 
 #: Relative step of the central difference of a contact's node pattern in its half-width.
@@ -132,6 +132,8 @@ class FieldSensitivity:
         w_vel[:, -1] = 1.0
         #: ẇ: the right-hand side's change in every direction (N, D)
         self.w_vel = w_vel
+        #: what an adhesion model's derivative methods share at this point (contract item 4)
+        self.memo: dict = {}
 
     # ---- building blocks ----------------------------------------------------------------
     def node_weights(self, u: np.ndarray, left_idx=None, right_idx=None, size=None) -> np.ndarray:
@@ -223,6 +225,31 @@ class FieldSensitivity:
                 explicit[2 * j, 2 * j + e] = (lp - lm) @ sigma[sl][:m] / (2 * eps)
                 explicit[2 * j + 1, 2 * j + e] = (rp - rm) @ sigma[sl][::-1][:m] / (2 * eps)
         return self.linear(W) + explicit
+
+    def fit_motion(self, powers) -> tuple[np.ndarray, np.ndarray]:
+        """The rows ``W`` of the uncalibrated fit with ``powers``
+        (:func:`~viscocontact.contact.fields.intensity_matrix`) and the change of ``Wσ`` at
+        fixed ``σ`` as the rows move with the mesh, (2 N_c, D) (a central difference of the node
+        pattern in each edge, as :meth:`stress_intensity`). ``dK̃ = W σ̇ + explicit``."""
+        mesh, sigma = self.fields.mesh, self.fields.sigma
+        nc = mesh.n_contacts
+        W = np.zeros((2 * nc, len(sigma)))
+        explicit = np.zeros((2 * nc, self.n_dirs))
+        for j in range(nc):
+            sl = mesh.slice(j)
+            a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
+            spec_j = contact_spec(self.spec, self.counts, j)
+            zone = None if self.zones is None else self.zones[j]
+            wl, wr = edge_rows(np.append(mesh.left[sl], mesh.right[sl][-1]), powers)
+            lo, hi = slice(sl.start, sl.start + len(wl)), slice(sl.stop - len(wr), sl.stop)
+            W[2 * j, lo], W[2 * j + 1, hi] = wl, wr
+            eps = NODE_STEP * 0.5 * (b - a)
+            for e, (da, db) in enumerate(((eps, 0.0), (0.0, eps))):
+                lp, rp = edge_rows(contact_nodes(a + da, b + db, spec_j, zone), powers)
+                lm, rm = edge_rows(contact_nodes(a - da, b - db, spec_j, zone), powers)
+                explicit[2 * j, 2 * j + e] = (lp - lm) @ sigma[lo] / (2 * eps)
+                explicit[2 * j + 1, 2 * j + e] = (rp - rm) @ sigma[hi] / (2 * eps)
+        return W, explicit
 
     # ---- the finite-δX energy release --------------------------------------------------------
     def energy_release(self, ctx, i: int, dx: float, ddx=None) -> np.ndarray | None:

@@ -58,6 +58,9 @@ class Equilibrium:
         self.checks = checks
         self.log = log
         self._noise: dict[tuple, float] = {}      # round-off floor per (edges, elements)
+        #: the last reason the adhesion model gave for a contact set it does not handle, in any
+        #: system of this solve (None: none met)
+        self.limitation: str | None = None
 
     @property
     def analytic(self) -> bool:
@@ -79,7 +82,11 @@ class Equilibrium:
         """The edge system of ``edges`` (element counts from the mesh policy unless given)."""
         if counts is None:
             counts = self.policy.counts_for(edges)
-        return EdgeSystem(self.prep, self.spec, self.adhesion, control, edges, counts)
+        return EdgeSystem(self.prep, self.spec, self.adhesion, control, edges, counts,
+                          on_limitation=self._limited)
+
+    def _limited(self, reason: str) -> None:
+        self.limitation = reason
 
     def residual_at(self, edges, control: Control):
         """The edge residuals of ``edges`` (``None`` when they are no valid contact set)."""

@@ -139,7 +139,14 @@ class Solve:
                 min_gap=float(gap.min()) if gap.size else np.inf,
                 edge_terms=terms, fields=fld, **common)
         if kind is Outcome.FULL_CONTACT:
-            return self.closed.result(target, out.message, want_fields, common)
+            result = self.closed.result(target, out.message, want_fields, common)
+            why = self.equilibrium.limitation
+            if not result.converged and why is not None:
+                # the contact sets on the way that the model could not evaluate are the likelier
+                # cause than the closed interface reached past them
+                result = attrs.evolve(result, message=f"{result.message}; on the way the "
+                                      f"adhesion model rejected contact sets: {why}")
+            return result
         if kind is Outcome.NO_CONTACT:
             pen = np.nan if target.is_load else target.value
             return ContactResult(area=0.0, mean_pressure=0.0, penetration=pen, friction=np.nan,

@@ -75,9 +75,12 @@ class EdgeSystem:
     counts : tuple or None
         Elements of each contact (``None``: ``spec.elements`` each); fixed, with the edge zones,
         for the whole solve so that the residual is smooth in the edges.
+    on_limitation : callable, optional
+        Called with the reason whenever the adhesion model rejects a point
+        (:class:`~viscocontact.adhesion.base.AdhesionLimitation`).
     """
 
-    def __init__(self, prep, spec, adhesion, control, edges, counts):
+    def __init__(self, prep, spec, adhesion, control, edges, counts, on_limitation=None):
         self.prep = prep
         self.spec = spec
         self.adhesion = adhesion
@@ -93,6 +96,7 @@ class EdgeSystem:
         self._previous = None       # field of the last valid evaluation (a start for the model)
         #: why the adhesion model rejected the last point it could not handle (None: none yet)
         self.limitation: str | None = None
+        self._on_limitation = on_limitation
 
     def evaluate(self, x):
         """``(fields, ctx, r)`` at ``x`` (the last evaluation is cached). Every evaluation
@@ -116,6 +120,8 @@ class EdgeSystem:
         except AdhesionLimitation as exc:
             # a point the model cannot handle: invalid for the solver, which steps back
             self.limitation = str(exc)
+            if self._on_limitation is not None:
+                self._on_limitation(self.limitation)
             r = np.full(len(x), np.inf)
             self.cache = {key: (None, None, r)}
             return None, None, r
@@ -153,7 +159,9 @@ class EdgeSystem:
             d = self.adhesion.residual_derivatives(ctx, sens)
             if d is not None and np.all(np.isfinite(d)):
                 J, c = d[:, :-1], d[:, -1]
-                dp = sens.pressure()
+                dp = self.adhesion.pressure_derivatives(ctx, sens)
+                if dp is None:
+                    dp = sens.pressure()
                 if self.control.is_load:
                     J = J - np.outer(c, dp[:-1] / dp[-1])
                     c = c / dp[-1]
