@@ -122,6 +122,9 @@ def sweep_arguments(parser: argparse.ArgumentParser, default_dx: str = "0,1e-4,1
                         help="δX values (q0·δX) of the wavy adhesive curves; 0 is the limit")
     parser.add_argument("--rough-edge-perturbations", default="1e-4",
                         help="δX values of the rough adhesive curves")
+    parser.add_argument("--rough-cohesive-ranges", default="",
+                        help="Maugis-Dugdale ranges h0 in nm of extra rough adhesive curves "
+                             "(docs/cohesive.md), e.g. 1,10; default none")
     parser.add_argument("--profiles", default="rough,wavy", help="rough, wavy or both")
     parser.add_argument("--zetas", default=None,
                         help="override the ζ list: 1e-3,1 or START:STOP:N (log-spaced)")
@@ -135,9 +138,11 @@ def sweep_arguments(parser: argparse.ArgumentParser, default_dx: str = "0,1e-4,1
 
 
 def sweep_family(profile: str, control: str, args) -> list:
-    """The sweeps of one profile and control, one per δX: ``[(δX, StudyData), ...]``. The
-    adhesionless curve is the twin of the first δX's sweep, or for the profiles in
-    :data:`SEPARATE_ADHESIONLESS` a sweep of its own, listed first with δX = None."""
+    """The sweeps of one profile and control, one per δX and (rough) one per Maugis-Dugdale
+    range of ``--rough-cohesive-ranges``: ``[(label, StudyData), ...]``, the label
+    ``"δX = 1e-4"`` or ``"h0 = 1 nm"``. The adhesionless curve is the twin of the first δX's
+    sweep, or for the profiles in :data:`SEPARATE_ADHESIONLESS` a sweep of its own, listed first
+    with the label None."""
     from viscocontact.problem import Discretization
     from viscocontact.studies import Sweep
 
@@ -161,8 +166,27 @@ def sweep_family(profile: str, control: str, args) -> list:
                       pair=(i == 0 and profile not in SEPARATE_ADHESIONLESS), **common)
         tag = dx_tag(dx) + ("" if step is None else f"_step{step:g}")
         path = Path(args.out) / f"sweep_{profile}_{control}_{tag}.h5"
-        out.append((dx, compute(sweep, path, args)))
+        out.append((f"δX = {dx:g}", compute(sweep, path, args)))
+    ranges = floats(getattr(args, "rough_cohesive_ranges", "") or "") if profile == "rough" else []
+    for h0 in ranges:
+        sweep = Sweep(scene=cohesive_scene(profile, h0), zeta_step=step, pair=False, **common)
+        tag = f"md{h0:g}nm" + ("" if step is None else f"_step{step:g}")
+        path = Path(args.out) / f"sweep_{profile}_{control}_{tag}.h5"
+        out.append((f"h0 = {h0:g} nm", compute(sweep, path, args)))
     return out
+
+
+def cohesive_scene(profile: str, h0_nm: float):
+    """The case with a Maugis-Dugdale zone of range ``h0_nm`` nanometres instead of the energy
+    balance (the same work of adhesion; ``docs/cohesive.md``)."""
+    from viscocontact.scene import Scene
+
+    data = scene(profile).to_dict()
+    data["adhesion"] = {"kind": "maugis-dugdale"}
+    physical = {k: v for k, v in data.get("physical", {}).items()
+                if k != "equilibrium_distance"}
+    data["physical"] = {**physical, "cohesive_range": h0_nm * 1e-9}
+    return Scene.from_dict(data)
 
 
 #: Profiles whose adhesionless curves are a sweep of their own instead of the adhesive sweep's
@@ -185,13 +209,13 @@ def adhesionless_scene(profile: str):
 
 
 def family_curves(family) -> list[dict]:
-    """Curves of :func:`viscocontact.plots.plot_panels` for a δX family: one colour set and
-    marker per δX."""
+    """Curves of :func:`viscocontact.plots.plot_panels` for a family of :func:`sweep_family`:
+    one colour set and marker per curve."""
     markers = "os^vD<>"
     curves = []
-    for i, (dx, data) in enumerate(family):
+    for i, (label, data) in enumerate(family):
         colors = [f"C{(i + 3 * j) % 10}" for j in range(4)] if len(family) > 1 else None
-        curves.append({"data": data, "label": f"δX = {dx:g}" if dx is not None else "",
+        curves.append({"data": data, "label": label or "",
                        "colors": colors, "marker": markers[i % len(markers)]})
     return curves
 

@@ -15,9 +15,14 @@ The load-controlled sweeps are the same files as those of ``fig_4_7.py``
 (``sweep_<profile>_mean_pressure_dx<δX>.h5``): run into the same ``--out``, the second script
 only reads them. Writes ``fig_4_10.png``.
 
+``--rough-cohesive-ranges 1,10`` adds rough adhesive curves with a Maugis–Dugdale zone of
+those ranges h0 in nm instead of the energy balance (``sweep_rough_mean_pressure_md1nm.h5``;
+``docs/cohesive.md``).
+
 Usage: ``python examples/fig_4_10.py [--out DIR] [--full] [--workers N]
-[--edge-perturbations 0,1e-4,1e-3] [--zetas 1e-3,1] [--zeta-step 0.05]`` (``--zeta-step``: the
-adhesive curves on a slow change of speed, see ``docs/figures.md``, "Fig. 4.10 at full size")
+[--edge-perturbations 0,1e-4,1e-3] [--zetas 1e-3,1] [--zeta-step 0.05]
+[--rough-cohesive-ranges 1]`` (``--zeta-step``: the adhesive curves on a slow change of speed,
+see ``docs/figures.md``, "Fig. 4.10 at full size")
 """
 from __future__ import annotations
 

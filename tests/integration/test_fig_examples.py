@@ -77,6 +77,18 @@ def test_fig_4_10_zeta_step_writes_a_slow_history_of_its_own(tmp_path):
     np.testing.assert_allclose(b, a, rtol=1e-7)
 
 
+def test_fig_4_10_rough_cohesive_curve(tmp_path):
+    """``--rough-cohesive-ranges``: a rough adhesive sweep with Maugis-Dugdale zones of that
+    range (a file of its own), next to the energy-balance one, in the figure."""
+    run_script("fig_4_10.py", tmp_path, "--profiles", "rough", "--rough-cohesive-ranges", "1")
+    check_png(tmp_path / "fig_4_10.png")
+    data = check_sweep(tmp_path / "sweep_rough_mean_pressure_md1nm.h5")
+    scene = data.scene.to_dict()
+    assert scene["adhesion"]["kind"] == "maugis-dugdale"
+    assert scene["physical"]["cohesive_range"] == 1e-9
+    check_sweep(tmp_path / "sweep_rough_mean_pressure_dx1e-04.h5")
+
+
 def test_fig_4_10_tiny_reuses_fig_4_7_sweeps(tmp_path):
     run_script("fig_4_7.py", tmp_path, "--edge-perturbations", "1e-4", "--profiles", "wavy")
     path = tmp_path / "sweep_wavy_mean_pressure_dx1e-04.h5"
