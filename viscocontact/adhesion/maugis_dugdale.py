@@ -152,13 +152,15 @@ class MaugisDugdale(AdhesionModel):
         return (self.critical_intensity(ctx.amplitude) * (np.sqrt(np.maximum(g, 0.0)) - 1.0)
                 + np.minimum(np.where(ctx.fields.loads.width > 0, 0.0, k), 0.0))
 
-    def residual_derivatives(self, ctx, dfields) -> np.ndarray:
+    def residual_derivatives(self, ctx, dfields) -> np.ndarray | None:
         """The derivatives of :meth:`residuals` in every edge and the penetration along the
         zones' own equations (:func:`~viscocontact.contact.cohesive.zone_derivatives`): at a
         zone ``K̃_c ġ/(2√(g̃ η))``, at an edge without a zone its compressive ``K̃``'s."""
         if self.gamma == 0:
             return dfields.stress_intensity()
         z = self._zone_derivatives(ctx, dfields)
+        if z is None:
+            return None
         g = self.tip_gaps(ctx)
         zone = ctx.fields.loads.width > 0
         k = self.intensity(ctx)
@@ -173,13 +175,20 @@ class MaugisDugdale(AdhesionModel):
         """``∂p̃∞`` with the zones' force, their lengths following the edges."""
         if self.gamma == 0 or ctx.fields.loads is None:
             return None
-        return self._zone_derivatives(ctx, dfields).pressure
+        z = self._zone_derivatives(ctx, dfields)
+        return None if z is None else z.pressure
 
     def _zone_derivatives(self, ctx, dfields):
+        """:func:`~viscocontact.contact.cohesive.zone_derivatives` once per point (shared by the
+        residuals' and the load's derivatives); None where the zone lengths do not follow the
+        edges (a singular ``∂K̃/∂d``: the orchestrator differences instead)."""
         key = ("maugis-dugdale", id(ctx.fields))
         if key not in dfields.memo:
-            dfields.memo[key] = zone_derivatives(ctx.fields, dfields,
-                                                 stress=self.strength(ctx.amplitude))
+            try:
+                dfields.memo[key] = zone_derivatives(ctx.fields, dfields,
+                                                     stress=self.strength(ctx.amplitude))
+            except np.linalg.LinAlgError:
+                dfields.memo[key] = None
         return dfields.memo[key]
 
     def zone_lengths(self, ctx) -> np.ndarray:

@@ -22,10 +22,9 @@ from __future__ import annotations
 
 import attrs
 import numpy as np
-
-from ..errors import ViscoContactError
 from scipy.linalg import lu_solve
 
+from ..errors import ViscoContactError
 from .fields import BOUNDED_POWERS, FieldSolution, KnownLoads, intensity_matrix, with_loads
 
 #: Accuracy of the bounded-stress condition, relative to ``σ̃0·√ℓ`` with ℓ the longest zone or
@@ -288,6 +287,11 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDe
     from the moving tip (a zone's own end at its tip does not count: it moves with it), with
     the profile's slope and the penetration. The lengths follow from ``K̃ = 0`` at every zone:
     ``ḋ = -(∂K̃/∂d)⁻¹ ∂K̃/∂(x, Δ̃)``.
+
+    Raises
+    ------
+    numpy.linalg.LinAlgError
+        When ``∂K̃/∂d`` is singular (the lengths do not follow the edges).
     """
     mesh = fields.mesh
     kernel = dfields.kernel

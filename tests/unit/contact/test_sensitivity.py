@@ -150,6 +150,22 @@ def test_maugis_dugdale_jacobian_equals_central_differences(left, right, zeta, h
     _assert_close(system, edges)
 
 
+def test_maugis_dugdale_with_singular_zone_equations_is_differenced(monkeypatch):
+    """Where the zone lengths do not follow the edges (``∂K̃/∂d`` singular) the model gives no
+    derivatives and the orchestrator differences the residuals."""
+    import viscocontact.adhesion.maugis_dugdale as md
+
+    def singular(*args, **kwargs):
+        raise np.linalg.LinAlgError("singular")
+
+    monkeypatch.setattr(md, "zone_derivatives", singular)
+    edges = np.array([-1.41860951 + 0.1, 1.41860951])
+    system = _system(edges, Control.penetration_of(0.9), profile=Sinusoid(amplitude=0.1),
+                     rheology=SLS, zeta=1.0, adhesion=MaugisDugdale(gamma=5e-4, range=1e-3))
+    assert system.derivatives(edges) is None
+    assert np.all(np.isfinite(system.jacobian(edges)))
+
+
 @pytest.mark.parametrize("h0, zeta, load", [(1e-6, 1e-2, False), (1e-6, 1.0, True),
                                              (1e-5, 1e-2, True)])
 def test_four_rough_contacts_with_zones_couple(h0, zeta, load):
