@@ -89,6 +89,19 @@ def test_fig_4_10_rough_cohesive_curve(tmp_path):
     check_sweep(tmp_path / "sweep_rough_mean_pressure_dx1e-04.h5")
 
 
+def test_cohesive_rough_tiny(tmp_path):
+    """examples/cohesive_rough.py: the adhesionless, energy-balance and Maugis-Dugdale rough
+    sweeps, their means in a CSV and the figure."""
+    run_script("cohesive_rough.py", tmp_path)
+    check_png(tmp_path / "cohesive_rough.png")
+    for tag in ("none", "dx1e-04", "md1nm"):
+        check_sweep(tmp_path / f"sweep_rough_mean_pressure_{tag}.h5")
+    lines = (tmp_path / "cohesive_rough.csv").read_text().splitlines()
+    assert lines[0].startswith("curve,load,zeta,reduced_friction")
+    assert {line.split(",")[0] for line in lines[1:]} == {"adhesionless", "δX = 0.0001",
+                                                         "h0 = 1 nm"}
+
+
 def test_fig_4_10_tiny_reuses_fig_4_7_sweeps(tmp_path):
     run_script("fig_4_7.py", tmp_path, "--edge-perturbations", "1e-4", "--profiles", "wavy")
     path = tmp_path / "sweep_wavy_mean_pressure_dx1e-04.h5"
