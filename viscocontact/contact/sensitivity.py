@@ -198,32 +198,13 @@ class FieldSensitivity:
     # ---- stress-intensity factors -----------------------------------------------------------
     def stress_intensity(self) -> np.ndarray:
         """``dK̃/d(x, Δ̃)`` (2 N_c, D) of the calibrated stress-intensity factors."""
-        mesh, sigma = self.fields.mesh, self.fields.sigma
-        nc = mesh.n_contacts
-        counts = element_counts(self.spec, self.counts, nc)
-        n = len(sigma)
-        W = np.zeros((n, 2 * nc))
-        explicit = np.zeros((2 * nc, self.n_dirs))
-        for j in range(nc):
-            sl = mesh.slice(j)
-            a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
-            spec_j = contact_spec(self.spec, self.counts, j)
-            zone = None if self.zones is None else self.zones[j]
+        counts = element_counts(self.spec, self.counts, self.fields.mesh.n_contacts)
+
+        def calibrated(j):
             cal = attrs.evolve(self.spec, elements=int(counts[j]))
-            z = np.append(mesh.left[sl], mesh.right[sl][-1])
-            wl, wr = _edge_weights(z, cal)
-            m = len(wl)
-            W[sl.start:sl.start + m, 2 * j] = wl
-            W[sl.stop - m:sl.stop, 2 * j + 1] = wr[::-1]
-            # the weights move with the mesh: a central difference in each edge (no kernel)
-            eps = NODE_STEP * 0.5 * (b - a)
-            for e, (da, db) in enumerate(((eps, 0.0), (0.0, eps))):
-                zp = contact_nodes(a + da, b + db, spec_j, zone)
-                zm = contact_nodes(a - da, b - db, spec_j, zone)
-                (lp, rp), (lm, rm) = (_edge_weights(zp, cal),
-                                      _edge_weights(zm, cal))
-                explicit[2 * j, 2 * j + e] = (lp - lm) @ sigma[sl][:m] / (2 * eps)
-                explicit[2 * j + 1, 2 * j + e] = (rp - rm) @ sigma[sl][::-1][:m] / (2 * eps)
+            return lambda nodes: _edge_weights(nodes, cal)
+
+        W, explicit = self._moving_rows(calibrated)
         return self.linear(W) + explicit
 
     def fit_motion(self, powers) -> tuple[np.ndarray, np.ndarray]:
@@ -231,24 +212,40 @@ class FieldSensitivity:
         (:func:`~viscocontact.contact.fields.intensity_matrix`) and the change of ``Wσ`` at
         fixed ``σ`` as the rows move with the mesh, (2 N_c, D) (a central difference of the node
         pattern in each edge, as :meth:`stress_intensity`). ``dK̃ = W σ̇ + explicit``."""
+        def uncalibrated(j):
+            def rows(nodes):
+                wl, wr = edge_rows(nodes, powers)
+                return wl, wr[::-1]
+            return rows
+
+        W, explicit = self._moving_rows(uncalibrated)
+        return W.T, explicit
+
+    def _moving_rows(self, weights_of) -> tuple[np.ndarray, np.ndarray]:
+        """``(W, explicit)``: the fit's rows ``W`` (N, 2 N_c) and the change of ``Wᵀσ`` at fixed
+        ``σ`` as they move with the mesh (2 N_c, D), a central difference of the node pattern in
+        each edge (no kernel). ``weights_of(j)`` gives contact ``j``'s function of its nodes to
+        ``(w_l, w_r)``, ``w_r`` on the elements counted from the right edge."""
         mesh, sigma = self.fields.mesh, self.fields.sigma
         nc = mesh.n_contacts
-        W = np.zeros((2 * nc, len(sigma)))
+        W = np.zeros((len(sigma), 2 * nc))
         explicit = np.zeros((2 * nc, self.n_dirs))
         for j in range(nc):
             sl = mesh.slice(j)
             a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
             spec_j = contact_spec(self.spec, self.counts, j)
             zone = None if self.zones is None else self.zones[j]
-            wl, wr = edge_rows(np.append(mesh.left[sl], mesh.right[sl][-1]), powers)
-            lo, hi = slice(sl.start, sl.start + len(wl)), slice(sl.stop - len(wr), sl.stop)
-            W[2 * j, lo], W[2 * j + 1, hi] = wl, wr
+            weights = weights_of(j)
+            wl, wr = weights(np.append(mesh.left[sl], mesh.right[sl][-1]))
+            m = len(wl)
+            W[sl.start:sl.start + m, 2 * j] = wl
+            W[sl.stop - m:sl.stop, 2 * j + 1] = wr[::-1]
             eps = NODE_STEP * 0.5 * (b - a)
             for e, (da, db) in enumerate(((eps, 0.0), (0.0, eps))):
-                lp, rp = edge_rows(contact_nodes(a + da, b + db, spec_j, zone), powers)
-                lm, rm = edge_rows(contact_nodes(a - da, b - db, spec_j, zone), powers)
-                explicit[2 * j, 2 * j + e] = (lp - lm) @ sigma[lo] / (2 * eps)
-                explicit[2 * j + 1, 2 * j + e] = (rp - rm) @ sigma[hi] / (2 * eps)
+                lp, rp = weights(contact_nodes(a + da, b + db, spec_j, zone))
+                lm, rm = weights(contact_nodes(a - da, b - db, spec_j, zone))
+                explicit[2 * j, 2 * j + e] = (lp - lm) @ sigma[sl][:m] / (2 * eps)
+                explicit[2 * j + 1, 2 * j + e] = (rp - rm) @ sigma[sl][::-1][:m] / (2 * eps)
         return W, explicit
 
     # ---- the finite-δX energy release --------------------------------------------------------
