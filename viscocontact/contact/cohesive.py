@@ -237,7 +237,8 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
         if np.any(over):
             if np.any(over & capped):
                 raise ZoneError(_MEET)
-            d = np.where(over, d / (d + d[partner]) * free, d)
+            total = np.where(over, d + d[partner], 1.0)     # (two closed zones: 0/0 otherwise)
+            d = np.where(over, d / total * free, d)
             new = np.sqrt(d)
         capped = over
         done = float(np.max(np.abs(new - t))) <= EDGE_STEP * max(float(np.max(new)), 1e-300)
