@@ -97,7 +97,7 @@ def test_cohesive_rough_tiny(tmp_path):
     for tag in ("none", "dx1e-04", "md1nm"):
         check_sweep(tmp_path / f"sweep_rough_mean_pressure_{tag}.h5")
     lines = (tmp_path / "cohesive_rough.csv").read_text().splitlines()
-    assert lines[0].startswith("curve,load,zeta,reduced_friction")
+    assert lines[0].startswith("curve,load,zeta,count,reduced_friction")
     assert {line.split(",")[0] for line in lines[1:]} == {"adhesionless", "δX = 0.0001",
                                                          "h0 = 1 nm"}
 
