@@ -98,8 +98,14 @@ def plot(table: list[dict], path: Path) -> Path:
                 style = "--" if name == "adhesionless" else "-"
                 color = "0.4" if name == "adhesionless" else f"C{i}"
                 ax.plot(z, mean, style, marker="o", ms=2.5, color=color, label=name)
-                ax.fill_between(z, [r[f"{q}_lower"] for r in pts],
-                                [r[f"{q}_upper"] for r in pts], color=color, alpha=0.15, lw=0)
+                lower = np.array([r[f"{q}_lower"] for r in pts])
+                if q == "reduced_friction":       # log axis: a band reaching below 0 is cut
+                    lower = np.maximum(lower, 1e-3 * mean)
+                ax.fill_between(z, lower, [r[f"{q}_upper"] for r in pts], color=color,
+                                alpha=0.15, lw=0)
+            if q == "reduced_friction":
+                ax.set_yscale("log")
+                ax.set_ylim(1e-5, 20)
             ax.set_xscale("log")
             ax.set_xlabel("ζ = q0Vτ")
             ax.set_ylabel(ylabel)
