@@ -33,16 +33,19 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def problem(zeta: float, pressure: float, cohesive_range: float, seed: int):
+    """The thesis rough scene with zones of ``cohesive_range`` metres
+    (:func:`_thesis_cases.cohesive_scene` of the examples), realization ``seed``."""
     import attrs
 
     from viscocontact.problem import ContactProblem
     from viscocontact.scene import Scene
 
-    text = (ROOT / "examples/scenes/thesis_rough.toml").read_text()
-    text = text.replace('kind = "energy-balance"', 'kind = "maugis-dugdale"').replace(
-        "equilibrium_distance = 1e-9", f"cohesive_range = {cohesive_range!r}").replace(
-        "seed = 0", f"seed = {seed}")
-    prob = ContactProblem.from_scene(Scene.from_toml(text))
+    sys.path.insert(0, str(ROOT / "examples"))
+    import _thesis_cases as cases
+
+    data = cases.cohesive_scene("rough", cohesive_range / 1e-9).to_dict()
+    data["profile"]["seed"] = seed
+    prob = ContactProblem.from_scene(Scene.from_dict(data))
     return attrs.evolve(prob, zeta=zeta, mean_pressure=pressure)
 
 

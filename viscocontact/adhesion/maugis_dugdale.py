@@ -182,7 +182,7 @@ class MaugisDugdale(AdhesionModel):
         """:func:`~viscocontact.contact.cohesive.zone_derivatives` once per point (shared by the
         residuals' and the load's derivatives); None where the zone lengths do not follow the
         edges (a singular ``∂K̃/∂d``: the orchestrator differences instead)."""
-        key = ("maugis-dugdale", id(ctx.fields))
+        key = "maugis-dugdale zones"           # dfields is of this point's field only
         if key not in dfields.memo:
             try:
                 dfields.memo[key] = zone_derivatives(ctx.fields, dfields,

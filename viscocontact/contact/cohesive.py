@@ -20,6 +20,8 @@ contact across the period) meet, or the iteration does not converge.
 """
 from __future__ import annotations
 
+import functools
+
 import attrs
 import numpy as np
 from scipy.linalg import lu_solve
@@ -91,6 +93,22 @@ def intensity(fields: FieldSolution) -> np.ndarray:
     return intensity_matrix(fields.mesh, BOUNDED_POWERS) @ fields.sigma
 
 
+def _kernel_slopes(kernel, x):
+    """``G̃(x) = F̃'(x) + c0`` (the slopes of the tabulated antiderivative), 0 where ``x`` is 0: a
+    zone's own end at its tip, where the callers' terms carry a vanishing velocity or are
+    replaced."""
+    zero = x == 0.0
+    out = kernel.antiderivative_slope(np.where(zero, 1.0, x)) + kernel.mean
+    return np.where(zero, 0.0, out)
+
+
+def _growth_stresses(fields: FieldSolution, kernel, stress: float, c: np.ndarray) -> np.ndarray:
+    """``-B⁻¹σ̃0G̃(ξ - c)`` (N, len(c)): the contact stresses per unit growth of zones whose tips
+    are ``c``, at fixed edges and penetration, on the factorisation at hand."""
+    g = _kernel_slopes(kernel, fields.mesh.mid[:, None] - np.asarray(c)[None, :])
+    return -lu_solve(fields.lu, stress * g, check_finite=False)
+
+
 def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control: dict,
                        columns: np.ndarray, weights: np.ndarray | None = None) -> np.ndarray:
     """``∂K̃_i/∂d_j`` of :func:`intensity` at fixed edges, for the zones ``j`` in ``columns``.
@@ -108,9 +126,7 @@ def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control:
     if loads is None:
         raise ValueError("intensity_jacobian: fields without zones (loads is None)")
     d = np.asarray(loads.width, dtype=float)
-    c = tips(mesh.edges, d)[columns]
-    g = kernel.antiderivative_slope(mesh.mid[:, None] - c[None, :]) + kernel.mean
-    ds = -lu_solve(fields.lu, stress * g, check_finite=False)
+    ds = _growth_stresses(fields, kernel, stress, tips(mesh.edges, d)[columns])
     if control.get("mean_pressure") is not None:
         h = mesh.width
         unit = fields.unit
@@ -277,7 +293,7 @@ class ZoneDerivatives:
 
 def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDerivatives:
     r"""The derivatives of a field with zones (:func:`zone_fields`) in every edge and the
-    penetration, from one solve with a column per direction and per zone on its factorisation.
+    penetration, from solves with a column per direction and per zone on its factorisation.
 
     At fixed zone lengths each zone moves with its edge. The zone loads' displacement at the
     collocation points then changes like an influence coefficient whose ends and point move
@@ -310,20 +326,14 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDe
     E = np.zeros((m, n_dirs))                     # zone ends and tips move with their edges
     E[np.arange(m), act] = 1.0
 
-    def slopes(x):
-        """``G̃(x)``, 0 where ``x`` is 0 (a zone's own end at its tip: the caller's terms there
-        carry a vanishing velocity, or are replaced)."""
-        zero = x == 0.0
-        out = kernel.antiderivative_slope(np.where(zero, 1.0, x)) + kernel.mean
-        return np.where(zero, 0.0, out)
-
+    slopes = functools.partial(_kernel_slopes, kernel)
     xi = mesh.mid
-    # the stresses: at fixed lengths in every direction, then per unit length of each zone
+    # the stresses: at fixed lengths in every direction (the zones move with their edges), then
+    # per unit length of each zone
     moved = slopes(xi[:, None] - a[None, :]) - slopes(xi[:, None] - b[None, :])
     u_dot = stress * (moved.sum(axis=1)[:, None] * dfields.colloc_vel - moved @ E)
-    rhs = np.column_stack([dfields.rhs - u_dot, -stress * slopes(xi[:, None] - c[None, :])])
-    sig_dot = lu_solve(fields.lu, rhs, check_finite=False)
-    sx, sd = sig_dot[:, :n_dirs], sig_dot[:, n_dirs:]
+    sx = lu_solve(fields.lu, dfields.rhs - u_dot, check_finite=False)
+    sd = _growth_stresses(fields, kernel, stress, c)
     # stress-intensity factors
     W, explicit = dfields.fit_motion(BOUNDED_POWERS)
     kx, kd = W @ sx + explicit, W @ sd

@@ -24,15 +24,12 @@ Pareto front of each solver drawn as a line).
 from __future__ import annotations
 
 import argparse
-import contextlib
 import csv
 import importlib.util
 import io
 import math
-import os
 import statistics
 import sys
-import tempfile
 import time
 from pathlib import Path
 from typing import Any
