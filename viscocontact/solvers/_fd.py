@@ -112,28 +112,56 @@ def fd_jacobian(fun, x, f0=None, *, scheme: str = "forward", rel_step: float = 1
 
 
 class BudgetExhausted(Exception):
-    """Raised by :class:`CountedResidual` instead of a call beyond ``max_evaluations``.
+    """Raised by :class:`CountedResidual` instead of a call beyond ``max_evaluations`` (or past a
+    ``probation`` without progress); :attr:`CountedResidual.stop` says which.
 
     Solvers catch this class only; it never comes from a problem's ``residual``.
     """
 
 
 class CountedResidual:
-    """``problem.residual`` with a call counter and an evaluation budget.
+    """``problem.residual`` with a call counter, an evaluation budget and the progress rule of
+    :attr:`Tolerances.probation`.
 
     Calling it returns a float array (a copy of ``x`` is passed, so the problem may keep it).
+    Once it has raised :class:`BudgetExhausted`, :attr:`stop` is the ``(status, message)`` the
+    solver reports.
     """
 
-    def __init__(self, problem: NonlinearProblem, budget: int):
+    def __init__(self, problem: NonlinearProblem, budget: int, probation: int = 0,
+                 progress: float = 1e-2):
         self._residual = problem.residual
         self.budget = budget
+        self.probation = probation
+        self.progress = progress
         self.count = 0
+        self._first = np.inf          # max|r| of the first call
+        self._best = np.inf           # smallest max|r| of the calls after it
+        self.stop: tuple[Status, str] = (Status.MAX_EVALUATIONS, "")
+
+    @classmethod
+    def of(cls, problem: NonlinearProblem, tolerances: Tolerances) -> "CountedResidual":
+        """The counter for a solve under ``tolerances``."""
+        return cls(problem, tolerances.max_evaluations, tolerances.probation, tolerances.progress)
 
     def __call__(self, x: np.ndarray) -> np.ndarray:
         if self.count >= self.budget:
+            self.stop = (Status.MAX_EVALUATIONS, f"{self.count} residual evaluations")
+            raise BudgetExhausted
+        if (self.probation and self.count == self.probation + 1
+                and not self._best <= self.progress * self._first):
+            self.stop = (Status.STALLED,
+                         f"no progress in {self.probation} residual evaluations: max|r| "
+                         f"{self._first:.3g} at the start, at best {self._best:.3g} since")
             raise BudgetExhausted
         self.count += 1
-        return np.asarray(self._residual(np.array(x, dtype=float)), dtype=float).reshape(-1)
+        r = np.asarray(self._residual(np.array(x, dtype=float)), dtype=float).reshape(-1)
+        size = max_abs(r)
+        if self.count == 1:
+            self._first = size
+        else:
+            self._best = min(self._best, size)
+        return r
 
 
 def max_abs(v: np.ndarray) -> float:

@@ -38,12 +38,25 @@ class Tolerances:
         Iteration budget.
     max_evaluations : int
         Budget of residual evaluations (finite-difference Jacobians included).
+    probation : int
+        Residual evaluations after the first within which a solve must make progress (0: no
+        such rule): when the smallest ``max|r|`` among them is above ``progress`` times the
+        first one's, the solve stops as ``Status.STALLED`` before the next evaluation. A caller
+        that can retry from a better start (the BEM's approach path: a shorter step) sets it,
+        since a Newton-type solve from a close start with an exact Jacobian gains digits in
+        every iteration and one that has not gained two in a few is outside its root's basin.
+        Honoured by the built-in solvers (:class:`~viscocontact.solvers._fd.CountedResidual`).
+    progress : float
+        The fraction of the first ``max|r|`` that ``probation`` asks for, in (0, 1).
     """
 
     residual: float = attrs.field(default=1e-10, validator=in_range(0.0, lo_open=True))
     step: float = attrs.field(default=1e-14, validator=in_range(0.0))
     max_iterations: int = attrs.field(default=200, validator=int_range(1))
     max_evaluations: int = attrs.field(default=20_000, validator=int_range(1))
+    probation: int = attrs.field(default=0, validator=int_range(0))
+    progress: float = attrs.field(default=1e-2, validator=in_range(0.0, 1.0, lo_open=True,
+                                                                   hi_open=True))
 
 
 @runtime_checkable

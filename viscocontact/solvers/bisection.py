@@ -73,7 +73,7 @@ class Bisection(NonlinearSolver):
 
     def _solve(self, problem: NonlinearProblem, x0: np.ndarray,
                tolerances: Tolerances) -> SolverResult:
-        fun = CountedResidual(problem, tolerances.max_evaluations)
+        fun = CountedResidual.of(problem, tolerances)
         n = x0.size
         orient_fn = optional(problem, "orientation")
         orient = np.ones(n) if orient_fn is None else np.sign(
@@ -134,6 +134,6 @@ class Bisection(NonlinearSolver):
                 it += 1
                 history.append(max_abs(r))
         except BudgetExhausted:
-            status, message = Status.MAX_EVALUATIONS, f"{fun.count} residual evaluations"
+            status, message = fun.stop
         return result(x, r, tolerances, status, message, it, fun.count, history,
                       steps=s.copy(), bracketed=bracketed.copy(), rejected=rejected)

@@ -116,7 +116,7 @@ class Broyden(FiniteDifferenceOptions, NonlinearSolver):
 
     def _solve(self, problem: NonlinearProblem, x0: np.ndarray,
                tolerances: Tolerances) -> SolverResult:
-        fun = CountedResidual(problem, tolerances.max_evaluations)
+        fun = CountedResidual.of(problem, tolerances)
         fd = self.finite_difference
         x, r = x0, np.full(x0.shape, np.inf)
         history: list[float] = []
@@ -176,7 +176,7 @@ class Broyden(FiniteDifferenceOptions, NonlinearSolver):
                     H = InverseJacobian(problem_jacobian(problem, fun, x, r, fd)[0])
                     fresh, grew, restarts = True, 0, restarts + 1
         except BudgetExhausted:
-            status, message = Status.MAX_EVALUATIONS, f"{fun.count} residual evaluations"
+            status, message = fun.stop
         return result(x, r, tolerances, status, message, it, fun.count, history,
                       restarts=restarts, skipped_updates=skipped)
 

@@ -62,7 +62,7 @@ class Newton(FiniteDifferenceOptions, NonlinearSolver):
 
     def _solve(self, problem: NonlinearProblem, x0: np.ndarray,
                tolerances: Tolerances) -> SolverResult:
-        fun = CountedResidual(problem, tolerances.max_evaluations)
+        fun = CountedResidual.of(problem, tolerances)
         fd = self.finite_difference
         x, r = x0, np.full(x0.shape, np.inf)
         history: list[float] = []
@@ -113,6 +113,6 @@ class Newton(FiniteDifferenceOptions, NonlinearSolver):
                 it += 1
                 history.append(max_abs(r))
         except BudgetExhausted:
-            status, message = Status.MAX_EVALUATIONS, f"{fun.count} residual evaluations"
+            status, message = fun.stop
         return result(x, r, tolerances, status, message, it, fun.count, history,
                       jacobians=jacobians, halvings=halvings)

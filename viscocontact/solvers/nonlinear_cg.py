@@ -278,7 +278,7 @@ class NonlinearCG(FiniteDifferenceOptions, NonlinearSolver):
         if self.gradient == "residual" and optional(problem, "merit") is None:
             raise ValidationError("NonlinearCG.gradient", self.gradient,
                                   "'least-squares' for a problem without merit(x)")
-        fun = CountedResidual(problem, tolerances.max_evaluations)
+        fun = CountedResidual.of(problem, tolerances)
         obj = _Objective(problem, fun, self.finite_difference, self.gradient)
         restart_every = self.restart_every or x0.size
         x, r = x0, np.full(x0.shape, np.inf)
@@ -345,7 +345,7 @@ class NonlinearCG(FiniteDifferenceOptions, NonlinearSolver):
                 since_restart += 1
                 history.append(max_abs(r))
         except BudgetExhausted:
-            status, message = Status.MAX_EVALUATIONS, f"{fun.count} residual evaluations"
+            status, message = fun.stop
         return result(x, r, tolerances, status, message, it, fun.count, history,
                       jacobians=obj.jacobians, steepest_descent_steps=restarts,
                       merit_evaluations=obj.merit_calls)

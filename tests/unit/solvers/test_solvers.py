@@ -1,4 +1,5 @@
 """The four built-in nonlinear solvers: convergence, contract, budgets, step bounds, options."""
+import attrs
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -135,6 +136,48 @@ def test_broyden_stall_rule_leaves_progressing_solves_alone():
     problem = SMOOTH.as_problem(jacobian=True)
     res = Broyden(relaxation=0.1, stall_iterations=5).solve(problem, SMOOTH_X0, TOL)
     assert res.converged
+
+
+@pytest.mark.parametrize("solver", SOLVERS, ids=ids)
+@pytest.mark.parametrize("x0", [0.5, 0.0, -2.0])
+def test_probation_stops_a_solve_without_progress(solver, x0):
+    """``Tolerances.probation``: a solve whose best residual after the first ``probation``
+    evaluations is not below ``progress`` times the first stops as STALLED before the next
+    evaluation, and says so."""
+    tol = Tolerances(residual=1e-9, max_iterations=500, max_evaluations=3000, probation=4,
+                     progress=1e-2)
+    rec = RecordingProblem(NoRoot())
+    res = solver.solve(rec, np.full(3, x0), tol)
+    assert res.status is Status.STALLED and not res.converged
+    assert rec.calls == res.function_evaluations <= 5
+    assert "no progress in 4 residual evaluations" in res.message or rec.calls < 5
+
+
+@pytest.mark.parametrize("solver", VARIANTS, ids=ids)
+@pytest.mark.parametrize("name", sorted(PROBLEMS))
+def test_probation_leaves_solves_that_gain_two_digits_alone(solver, name):
+    """On the reference problems a solve whose best ``max|r|`` among evaluations 2-5 is a
+    hundredth of the first ends exactly as without the rule (same iterate, same count); any
+    other stops as STALLED after five evaluations."""
+    problem, x0, _, _ = PROBLEMS[name]
+    free_rec = RecordingProblem(problem)
+    free = solver.solve(free_rec, x0, TOL)
+    sizes = [float(np.max(np.abs(problem.residual(x)))) for x in free_rec.points]
+    ruled = solver.solve(RecordingProblem(problem), x0, attrs.evolve(TOL, probation=4))
+    if len(sizes) <= 5 or min(sizes[1:5]) <= 1e-2 * sizes[0]:
+        assert ruled.status is free.status
+        assert ruled.function_evaluations == free.function_evaluations
+        np.testing.assert_array_equal(ruled.x, free.x)
+    else:
+        assert ruled.status is Status.STALLED and ruled.function_evaluations == 5
+        assert "no progress in 4 residual evaluations" in ruled.message
+
+
+@pytest.mark.parametrize("field, value", [("probation", -1), ("progress", 0.0),
+                                          ("progress", 1.0)])
+def test_probation_options_are_validated(field, value):
+    with pytest.raises(ValidationError, match=field):
+        Tolerances(**{field: value})
 
 
 @pytest.mark.parametrize("solver", SOLVERS, ids=ids)

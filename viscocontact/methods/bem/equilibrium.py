@@ -100,14 +100,16 @@ class Equilibrium:
 
     def solve(self, edges, control: Control, use_fallback: bool = True,
               budget: int | None = None, refine: bool = True, polish: bool = True,
-              fallback_budget: int | None = None) -> State:
+              fallback_budget: int | None = None, probation: int = 0) -> State:
         """Equilibrium at ``control`` from ``edges`` (contact-set changes included).
 
         ``use_fallback = False`` skips the fallback march when the primary solver stops, and
         ``budget`` caps the residual evaluations of each solver call: the approach path uses both
         for its trial steps, since a solve that fails near a fold costs hundreds of evaluations
         while a halved step (and at the end the snap) finds the jump anyway. ``fallback_budget``
-        caps the fallback's calls instead when given.
+        caps the fallback's calls instead when given. ``probation`` sets
+        :attr:`Tolerances.probation` for the primary solver's calls (not the fallback's): the
+        approach's trial steps stop a solve that makes no progress and halve the step instead.
 
         ``refine = False`` reports a contact whose small tension and split alternate as a cycle
         instead of refining it (:data:`REFINED_TENSION`): the approach's intermediate steps,
@@ -131,6 +133,8 @@ class Equilibrium:
                                                                       tolerances.max_evaluations))
             if fallback_budget is None:
                 fallback_tolerances = tolerances
+        if probation:
+            tolerances = attrs.evolve(tolerances, probation=probation)
         edges = np.asarray(edges, dtype=float)
         fallback_first = False
         converged_before_births: list[np.ndarray] = []
