@@ -41,7 +41,11 @@ class Discretization:
     check_points : int
         Points of the uniform grid on which interpenetration is checked.
     path_step : float
-        Largest penetration step ``Δ̃`` of the approach path.
+        Largest penetration step ``Δ̃`` of the approach path. On a rough adhesive profile the
+        equilibrium reached from first touch can depend on it: at ζ = 1e-2 about a quarter of the
+        thesis profile's points land on another equilibrium at a ten times smaller step
+        (``docs/performance.md`` §11); a study that needs the quasi-static branch point by point
+        should check its points at a smaller step.
     interior_resolution : float or None
         Elements per shortest wavelength of the profile (:attr:`Profile.shortest_wavelength`)
         inside a contact. The clustered mesh of eq. 4.22 puts its largest elements mid-contact
