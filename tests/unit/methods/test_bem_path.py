@@ -2,6 +2,7 @@
 born adhesive (``Equilibrium.grow``)."""
 from __future__ import annotations
 
+import attrs
 import numpy as np
 import pytest
 
@@ -12,7 +13,7 @@ from viscocontact.methods.bem.state import Outcome
 from viscocontact.problem import ContactProblem, Discretization
 from viscocontact.profiles import SelfAffineProfile, Sinusoid
 from viscocontact.rheology import StandardLinearSolid
-from viscocontact.solvers import Broyden, Newton
+from viscocontact.solvers import Bisection, Broyden, Newton
 
 SLS = StandardLinearSolid(beta=10.0)
 WAVY = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=SLS, solver=Newton(),
@@ -76,6 +77,19 @@ def test_failed_approach_steps_are_cut_short_and_not_retried_at_once(monkeypatch
     monkeypatch.setattr(path, "CEILING_GROWTH", np.inf)
     plain = Solve(problem, problem.prepare()).run(None, False)
     _assert_same_equilibrium(plain, ruled, edges_to=1e-8)       # and fewer evaluations
+
+
+@pytest.mark.parametrize("solver, adhesive, expected", [
+    (Broyden(), True, 4), (Newton(), True, 4), (Broyden(), False, 0),
+    (Bisection(), True, 0)])
+def test_only_adhesive_approach_steps_with_jacobians_are_on_probation(solver, adhesive, expected):
+    """Adhesionless steps that start far from their root progress slowly but steadily and keep
+    the full budget; a march without Jacobians (bisection) keeps it too."""
+    from viscocontact.adhesion import NoAdhesion
+
+    problem = attrs.evolve(WAVY, solver=solver,
+                           adhesion=WAVY.adhesion if adhesive else NoAdhesion())
+    assert Solve(problem, problem.prepare()).path.probation == expected
 
 
 def test_the_tangent_predicts_a_small_step_to_second_order():
