@@ -142,8 +142,9 @@ class Path:
                              refine=d_next == d_end, polish=d_next == d_end,
                              probation=self.probation)
             if trial.outcome is Outcome.CONVERGED:
-                # a step that failed is not tried again at once: the steps after a failure
-                # grow from the halved one by CEILING_GROWTH at most
+                # a step size that failed is not tried again at once: the steps after a
+                # failure grow from the halved one by CEILING_GROWTH at most (the penetration
+                # that failed can be tried again, from a state closer to it)
                 step = min(self.next_step(step, start, state.edges, trial.edges), ceiling)
                 ceiling *= CEILING_GROWTH
                 below = state
