@@ -30,6 +30,8 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "examples"))         # _thesis_cases
+sys.path.insert(0, str(Path(__file__).resolve().parent))   # adhesive_point
 
 
 def problem(zeta: float, pressure: float, cohesive_range: float, seed: int):
@@ -40,7 +42,6 @@ def problem(zeta: float, pressure: float, cohesive_range: float, seed: int):
     from viscocontact.problem import ContactProblem
     from viscocontact.scene import Scene
 
-    sys.path.insert(0, str(ROOT / "examples"))
     import _thesis_cases as cases
 
     data = cases.cohesive_scene("rough", cohesive_range / 1e-9).to_dict()
@@ -66,7 +67,6 @@ def checks(r, prob) -> dict:
 
 
 def main(argv=None) -> None:
-    sys.path.insert(0, str(Path(__file__).resolve().parent))
     from adhesive_point import dense_solve_seconds
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])

@@ -156,11 +156,11 @@ class CountedResidual:
             raise BudgetExhausted
         self.count += 1
         r = np.asarray(self._residual(np.array(x, dtype=float)), dtype=float).reshape(-1)
-        size = max_abs(r)
-        if self.count == 1:
-            self._first = size
-        else:
-            self._best = min(self._best, size)
+        if self.probation and self.count <= self.probation + 1:
+            if self.count == 1:
+                self._first = max_abs(r)
+            else:
+                self._best = min(self._best, max_abs(r))
         return r
 
 

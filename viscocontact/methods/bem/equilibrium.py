@@ -63,6 +63,11 @@ class Equilibrium:
         self.limitation: str | None = None
 
     @property
+    def adhesive(self) -> bool:
+        """Whether the adhesion model has a work of adhesion (adhesive contacts)."""
+        return self.adhesion.work_of_adhesion > 0
+
+    @property
     def analytic(self) -> bool:
         """Whether the adhesion model gives residual derivatives (analytic Jacobians)."""
         from ...adhesion.base import AdhesionModel
@@ -219,7 +224,7 @@ class Equilibrium:
                 log.event(f"{len(regions)} contact(s) born")
                 if full:
                     return State.full_contact()
-                if self.adhesion.work_of_adhesion > 0:
+                if self.adhesive:
                     # an adhesive contact is born far from its equilibrium, often next to a
                     # neighbour it then merges with across a closing neck, which is where
                     # Newton-type steps stall and the fallback march gets through

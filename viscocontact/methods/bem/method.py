@@ -81,7 +81,7 @@ class Solve:
         p = self.problem
         target = (Control.penetration_of(p.penetration) if p.penetration is not None
                   else Control.load_of(p.mean_pressure))
-        adhesive = p.adhesion.work_of_adhesion > 0
+        adhesive = self.equilibrium.adhesive
         if initial is not None and getattr(initial, "full_contact", False):
             out = self.path.from_full_contact(target)
         elif initial is not None:

@@ -176,7 +176,7 @@ class Path:
                 step, ceiling = self.path_step, np.inf
                 continue
             step *= 0.5
-            if eq.adhesion.work_of_adhesion > 0:
+            if eq.adhesive:
                 ceiling = step
             log.event(f"approach step halved to {step:.3g}")
 
@@ -202,7 +202,7 @@ class Path:
         says which load the branch peaked at.
         """
         shape = self.eq.prep.shape
-        if (self.eq.adhesion.work_of_adhesion <= 0 or not peak[0] < target.value
+        if (not self.eq.adhesive or not peak[0] < target.value
                 or len(shape.maxima) != 1 or end.fields is None
                 or not end.fields.mean_pressure
                 <= peak[0] - PEAK_FALL * (target.value - peak[0])
@@ -247,7 +247,7 @@ class Path:
     def probation(self) -> int:
         """:attr:`Tolerances.probation` of an approach step that can still be halved:
         :data:`APPROACH_PROBATION` for an adhesive scene solved :attr:`quick`, else 0."""
-        return APPROACH_PROBATION if self.quick and self.eq.adhesion.work_of_adhesion > 0 else 0
+        return APPROACH_PROBATION if self.quick and self.eq.adhesive else 0
 
     @property
     def quick(self) -> bool:
