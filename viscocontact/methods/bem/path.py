@@ -37,6 +37,18 @@ CEILING_GROWTH = 1.25
 #: Largest correction of a predicted edge, relative to its contact's half-width, that the step
 #: control aims at (:meth:`Path.next_step`).
 PREDICTOR_ERROR = 0.02
+#: A crossing of a fold (:meth:`Path.cross`) lands this fraction of the path step past the fold's
+#: estimated penetration (:meth:`Path.fold_ahead`), so that an estimate a little short of the
+#: fold still crosses it.
+FOLD_MARGIN = 1.0 / 64.0
+#: First and largest move of the leading edge along the tangent in a crossing, in half-widths of
+#: its contact (the move doubles from the first).
+CROSS_FIRST = 1.0 / 16.0
+CROSS_REACH = 8.0
+#: A converged approach step whose corrector moved an edge by more than this many half-widths of
+#: its contact from the prediction has jumped past a fold (the fallback march of the smallest
+#: step): the ceiling left by the failures before it is lifted.
+JUMPED = 0.25
 #: How far the load must have fallen past its peak, relative to the target's distance above the
 #: peak, for :meth:`Path.closed_past_peak` to take the peak for the branch's load maximum.
 PEAK_FALL = 0.1
@@ -106,6 +118,10 @@ class Path:
         peak = (-np.inf, d0)              # the largest load along the branch, and where
         below = None                      # the converged state before the last one
         ceiling = np.inf                  # largest step allowed since the last failed one
+        trend = None                      # (Δ̃, edge speed, edges) of the last state
+        fold = None                       # the fold estimated ahead of the current state
+        fresh = True                      # the current state is new (its trend not taken)
+        crossed = False                   # a crossing was tried from the current state
         while True:
             fields = state.fields
             if fields.mean_pressure > peak[0]:
@@ -134,6 +150,35 @@ class Path:
                 d_next = d_prev + step
             else:
                 d_next = d_prev + np.clip(d_end - d_prev, -step, step)
+            # a fold ahead (the edges' speed along the branch grows as 1/√(Δ̃* - Δ̃)): cross it
+            # instead of failing at it and halving the step down to it
+            tangent = self.tangent(state, False) if self.quick and eq.adhesive else None
+            if fresh:
+                fresh = False
+                speed = self.edge_speed(state, tangent)
+                sample = (d_prev, speed, np.size(state.edges))
+                fold = (self.fold_ahead(trend[:2], sample[:2])
+                        if trend is not None and trend[2] == sample[2] else None)
+                trend = None if speed is None else sample
+            if fold is not None and d_prev < fold < d_next and not crossed:
+                crossed = True
+                d_cross = min(d_next, fold + FOLD_MARGIN * self.path_step)
+                jump = self.cross(state, tangent, Control.penetration_of(d_cross),
+                                  polish=d_cross == d_end)
+                if jump is not None:
+                    if jump.outcome is Outcome.FULL_CONTACT:
+                        return jump
+                    if self.jumped(state.edges + tangent * (d_cross - d_prev), state.edges,
+                                   jump.edges):
+                        # a new branch: its own trend; its steps grow from the one that
+                        # led to the fold
+                        log.event(f"approach branch folds near penetration {fold:.6g}; its "
+                                  f"fastest edge jumped at {d_cross:.6g}")
+                        trend = None
+                    below = state
+                    state, d_prev = jump, d_cross
+                    ceiling, fresh, crossed = np.inf, True, False
+                    continue
             # the fallback march only once the step is small enough for a fold to be likely
             last = step < self.path_step / 16
             start = self.predicted(state, d_next - d_prev)
@@ -142,13 +187,18 @@ class Path:
                              refine=d_next == d_end, polish=d_next == d_end,
                              probation=self.probation)
             if trial.outcome is Outcome.CONVERGED:
-                # a step size that failed is not tried again at once: the steps after a
-                # failure grow from the halved one by CEILING_GROWTH at most (the penetration
-                # that failed can be tried again, from a state closer to it)
-                step = min(self.next_step(step, start, state.edges, trial.edges), ceiling)
-                ceiling *= CEILING_GROWTH
+                if eq.adhesive and self.jumped(start, state.edges, trial.edges):
+                    # the fallback march crossed a fold: the failures before it say nothing
+                    # of the landing branch, whose steps grow from this one
+                    ceiling, trend = np.inf, None
+                else:
+                    # a step size that failed is not tried again at once: the steps after a
+                    # failure grow from the halved one by CEILING_GROWTH at most (the
+                    # penetration that failed can be tried again, from a state closer to it)
+                    step = min(self.next_step(step, start, state.edges, trial.edges), ceiling)
+                    ceiling *= CEILING_GROWTH
                 below = state
-                state, d_prev = trial, d_next
+                state, d_prev, fresh, crossed = trial, d_next, True, False
                 continue
             if trial.outcome is Outcome.FULL_CONTACT:
                 if d_end is None and not self.closed.supports(target.value):
@@ -173,7 +223,7 @@ class Path:
                     return jump
                 log.event(f"contact jumped at penetration {d_next:.6g}")
                 state, d_prev = jump, d_next
-                step, ceiling = self.path_step, np.inf
+                step, ceiling, trend, fresh, crossed = self.path_step, np.inf, None, True, False
                 continue
             step *= 0.5
             if eq.adhesive:
@@ -233,6 +283,103 @@ class Path:
         factor = np.sqrt(PREDICTOR_ERROR / rho) if rho > 0 else 2.0
         return float(np.clip(step * np.clip(factor, 0.5, 2.0), self.path_step / 16,
                              self.path_step))
+
+    @staticmethod
+    def jumped(predicted, before, after) -> bool:
+        """Whether the corrector of a converged step moved the edges from the prediction by more
+        than :data:`JUMPED` half-widths (or the contact set changed): the step crossed a fold."""
+        predicted, before, after = (np.asarray(v, dtype=float) for v in (predicted, before, after))
+        if after.shape != before.shape:
+            return False            # a birth: the step control of the new set as before
+        if predicted.shape != after.shape or after.size == 0:
+            return False
+        half = np.repeat(0.5 * (after[1::2] - after[0::2]), 2)
+        return bool(np.max(np.abs(after - predicted) / half) > JUMPED)
+
+    @staticmethod
+    def edge_speed(state: State, tangent) -> float | None:
+        """``max_i |dx_i/dΔ̃| / α_i``: how fast the fastest edge of a converged state moves
+        along the branch, in half-widths α of its contact per unit penetration (None without a
+        tangent)."""
+        if tangent is None:
+            return None
+        x = np.asarray(state.edges, dtype=float)
+        half = np.repeat(0.5 * (x[1::2] - x[0::2]), 2)
+        speed = float(np.max(np.abs(tangent) / half))
+        return speed if np.isfinite(speed) and speed > 0 else None
+
+    @staticmethod
+    def fold_ahead(before: tuple, after: tuple) -> float | None:
+        """The penetration at which the branch through two converged states ``(Δ̃, speed)``
+        folds (:meth:`edge_speed`), or None when the edges do not speed up.
+
+        Near a fold ``Δ̃*`` the branch is a parabola in the edges, ``Δ̃* - Δ̃ ∝ (x - x*)²``, so
+        the edges' speed grows as ``(Δ̃* - Δ̃)^{-1/2}`` and ``1/speed²`` falls linearly to 0 at
+        the fold: its line through the two states gives ``Δ̃*``. Far from a fold the edges also
+        speed up now and then (a neighbour's pull, a slope of the profile): then the estimate
+        lies beyond the next step, or the crossing finds the branch's continuation
+        (:meth:`cross`). The fastest edge is the one taken: the first fold of each edge
+        separately (tried too) took other branches on 4 of 15 points of the thesis rough
+        profile where the fastest edge took them on 2 (``docs/performance.md`` §12).
+        """
+        (d0, s0), (d1, s1) = before, after
+        if s0 is None or s1 is None or not (s1 > s0 > 0) or not d1 > d0:
+            return None
+        a, b = 1.0 / s0**2, 1.0 / s1**2
+        return float(d1 + (d1 - d0) * b / (a - b))
+
+    def cross(self, state: State, tangent, control: Control, polish: bool = False) -> State | None:
+        """The equilibrium at ``control`` past a fold of the branch through ``state``, reached by
+        the fastest edge of the branch's tangent; None when none is found.
+
+        Past a fold the edges have no equilibrium near their last one: the edge that ran fastest
+        towards the fold goes on (a neck closing, a contact spreading over a valley) until it
+        lands on another branch, merges with its neighbour or the contact closes. That edge
+        alone moves on from ``state`` (the others are held), by :data:`CROSS_FIRST` of its
+        contact's half-width at first and twice as far each time, until its residual changes
+        sign (it no longer wants to move on: the landing is bracketed) or the contact set
+        changes; the equilibrium is solved from the middle of the bracket or from the new
+        contact set. Where the estimate of the fold was short and the branch goes on, the first
+        move brackets its continuation.
+
+        Moving the other edges along the tangent too, by as much, took other branches on 4 of 15
+        points of the thesis rough profile (against 2 of the path without crossings): their
+        linear moves, many half-widths long, closed gaps the fastest edge's jump does not close.
+        """
+        x0 = np.asarray(state.edges, dtype=float)
+        if tangent is None or x0.size == 0:
+            return None
+        half = 0.5 * (x0[1::2] - x0[0::2])
+        lead = int(np.argmax(np.abs(tangent) / np.repeat(half, 2)))
+        direction = float(np.sign(tangent[lead]))
+        if direction == 0.0:
+            return None
+        # an edge wants to move on while -sign(r)·(-1 left, +1 right) is the sign of its move
+        outward = -1.0 if lead % 2 == 0 else 1.0
+        unit = np.zeros_like(x0)
+        unit[lead] = direction * half[lead // 2]
+        previous, s = 0.0, CROSS_FIRST
+        start = None
+        while s <= CROSS_REACH:
+            trial, changed, _, full = repair(x0 + s * unit, MIN_WIDTH, MIN_GAP)
+            if full:
+                if not control.is_load or self.closed.supports(control.value):
+                    return State.full_contact()
+                return None
+            if changed:
+                start = trial                 # it met its neighbour, or its contact vanished
+                break
+            r = self.eq.residual_at(trial, control)
+            if r is None or not np.all(np.isfinite(r)):
+                return None
+            if -np.sign(r[lead]) * outward != direction:
+                start = x0 + 0.5 * (previous + s) * unit
+                break
+            previous, s = s, 2.0 * s
+        if start is None:
+            return None
+        out = self.eq.solve(start, control, polish=polish, budget=APPROACH_BUDGET)
+        return out if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT) else None
 
     @property
     def budget(self) -> int:
