@@ -167,6 +167,8 @@ class Path:
                                   polish=d_cross == d_end)
                 if jump is not None:
                     if jump.outcome is Outcome.FULL_CONTACT:
+                        if d_end is None and not self.closed.supports(target.value):
+                            return eq.solve(state.edges, target)   # as after a closing step
                         return jump
                     if self.jumped(state.edges + tangent * (d_cross - d_prev), state.edges,
                                    jump.edges):
@@ -287,12 +289,11 @@ class Path:
     @staticmethod
     def jumped(predicted, before, after) -> bool:
         """Whether the corrector of a converged step moved the edges from the prediction by more
-        than :data:`JUMPED` half-widths (or the contact set changed): the step crossed a fold."""
+        than :data:`JUMPED` half-widths: the step crossed a fold (a step in which contacts were
+        born or merged is not taken for one)."""
         predicted, before, after = (np.asarray(v, dtype=float) for v in (predicted, before, after))
-        if after.shape != before.shape:
-            return False            # a birth: the step control of the new set as before
-        if predicted.shape != after.shape or after.size == 0:
-            return False
+        if after.shape != before.shape or predicted.shape != after.shape or after.size == 0:
+            return False            # the step control of the new contact set as before
         half = np.repeat(0.5 * (after[1::2] - after[0::2]), 2)
         return bool(np.max(np.abs(after - predicted) / half) > JUMPED)
 
