@@ -12,6 +12,11 @@ The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one 
 (median of five), measured in the same run so that the ratio does not depend on the machine's
 load. Prints one line per seed and the median; ``--profile FILE`` writes the cProfile statistics
 of the first seed to FILE instead of timing the rest.
+
+Before the timed solves a small adhesive sinusoid is solved once and its time printed as the
+process's start: the package's imports, numba and its cached machine code (0.6-1 s), which a
+study pays once per process and which would otherwise fall on the first seed alone. ``--cold``
+leaves it out (the first seed then pays it).
 """
 from __future__ import annotations
 
@@ -37,6 +42,22 @@ def dense_solve_seconds(n: int = 2000, repeats: int = 5) -> float:
     return float(np.median(times))
 
 
+def warm_up() -> float:
+    """Seconds of one small adhesive solve in a new process (imports, compiled code loaded)."""
+    t = time.perf_counter()
+    from viscocontact.adhesion import EnergyBalance
+    from viscocontact.problem import ContactProblem, Discretization
+    from viscocontact.profiles import Sinusoid
+    from viscocontact.rheology import StandardLinearSolid
+    from viscocontact.solvers import Broyden
+
+    ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+                   adhesion=EnergyBalance(gamma=1e-4), solver=Broyden(), mean_pressure=0.1,
+                   zeta=1e-3,
+                   discretization=Discretization(elements=32)).solve()
+    return time.perf_counter() - t
+
+
 def problem(seed: int, crowded: bool, solver=None):
     from viscocontact.adhesion import EnergyBalance
     from viscocontact.problem import ContactProblem
@@ -58,6 +79,8 @@ def main(argv=None) -> None:
     ap.add_argument("--crowded", action="store_true", help="ζ = 1e-6, p̃∞ = 0.6")
     ap.add_argument("--solver", default="broyden", choices=("broyden", "newton"))
     ap.add_argument("--profile", default=None, help="write cProfile statistics of the first seed")
+    ap.add_argument("--cold", action="store_true",
+                    help="no warm-up solve: the first seed pays the process's start")
     args = ap.parse_args(argv)
     from viscocontact.solvers import Broyden, Newton
 
@@ -66,6 +89,9 @@ def main(argv=None) -> None:
              else ([0, 1, 2] if args.crowded else [11, 12, 13]))
     ref = dense_solve_seconds()
     print(f"numpy 2000x2000 solve, one BLAS thread: {ref:.3f} s", flush=True)
+    if not args.cold:
+        print(f"start of the process (a small adhesive sinusoid, untimed below): "
+              f"{warm_up():.2f} s", flush=True)
     print(f"{'seed':>4s} {'s':>8s} {'x solve':>8s} {'ev':>6s} {'it':>6s} {'area':>10s} {'n':>3s} "
           "converged")
     times = []
