@@ -198,6 +198,38 @@ def test_closed_contact_is_reported_as_the_bem_reports_it(kernel, load):
     assert np.allclose(s.fields["pressure"], b.fields["pressure"], rtol=0, atol=1e-9)
 
 
+@pytest.mark.parametrize("rheology, zeta", [(Elastic(), 0.0), (SLS, 0.5)])
+def test_at_the_closing_penetration_of_an_incompressible_solid_the_contact_closes_at_the_least_load(
+        rheology, zeta):
+    """On a half-plane (``c0 = 0``) full contact fixes the penetration (Δ̃ = 1 for a sinusoid)
+    and carries any load from the closing load up. Penetration control there gives the least
+    load, the limit of the partial contacts: Westergaard's p̃∞ = 1 on the elastic sinusoid.
+    Both methods report the same state; a larger penetration cannot be imposed."""
+    prob = _problem(rheology=rheology, zeta=zeta, penetration=1.0)
+    s, b = Spectral().solve(prob), prob.solve()
+    for r in (s, b):
+        assert r.converged and r.full_contact and r.area == 2 * np.pi, r.message
+        assert "least load that keeps it closed" in r.message
+    assert s.mean_pressure == pytest.approx(b.mean_pressure, rel=1e-9)
+    if zeta == 0.0:
+        assert s.mean_pressure == pytest.approx(1.0, rel=1e-9)            # Westergaard
+    # the partial contacts' loads rise towards it as the penetration nears closure
+    gaps = [s.mean_pressure - Spectral().solve(attrs.evolve(prob, penetration=d)).mean_pressure
+            for d in (0.999, 0.9999)]
+    assert 0 < gaps[1] < 0.5 * gaps[0]
+    above = Spectral().solve(attrs.evolve(prob, penetration=1.001))
+    assert not above.converged and "cannot be imposed" in above.message
+
+
+def test_an_adhesive_closed_contact_under_its_closing_penetration_asks_for_the_load():
+    """With adhesion the closed interface carries tension too, so at the closing penetration no
+    least load stands out: the solve fails and says to give the mean pressure."""
+    prob = attrs.evolve(_problem(penetration=1.0), adhesion=EnergyBalance(gamma=1e-3))
+    r = prob.solve()
+    assert not r.converged and r.full_contact
+    assert "give the mean pressure" in r.message
+
+
 def test_result_schema_and_contact_conditions():
     prob = _problem(profile=_rough(), rheology=SLS, zeta=0.1)
     r = Spectral().solve(prob, fields=True)

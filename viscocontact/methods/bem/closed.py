@@ -65,6 +65,19 @@ class ClosedContact:
             return True
         return self.largest_tension(mean_pressure) <= self.strength
 
+    def closes(self, control: Control) -> bool:
+        """Whether the adhesionless equilibrium under ``control`` is the closed contact: it
+        carries the load without tension (``p̃∞ >= max σ̃_osc``); on an incompressible solid
+        (``c0 = 0``), whose closed contact fixes the penetration, at that penetration or beyond
+        (beyond, :meth:`result` says that it cannot be imposed)."""
+        _, rh, _, stress = self.stress
+        closing_load = float(np.max(stress))
+        if control.is_load:
+            return control.value >= closing_load
+        if self.prep.kernel.mean == 0.0:
+            return control.value >= 1.0 - rh[0].real - 1e-9
+        return self.mean_pressure_at(control.value) >= closing_load
+
     def holds(self, control: Control) -> bool:
         """Whether a closed contact stays closed under ``control`` (while its tension stays
         within the interface's strength: none without adhesion)."""
@@ -86,15 +99,28 @@ class ClosedContact:
         else:
             pen = control.value
             if c0 == 0.0:
-                if abs(pen - (1.0 - rh[0].real)) > 1e-9:
+                closing = 1.0 - rh[0].real
+                why = None
+                if abs(pen - closing) > 1e-9:
+                    why = (f"full contact on an incompressible solid fixes the penetration at "
+                           f"{closing:.6g}; a larger one cannot be imposed")
+                elif self.adhesive:
+                    why = (f"full contact on an incompressible solid holds at the penetration "
+                           f"{closing:.6g} under any load it carries, so the penetration does "
+                           "not fix the load: give the mean pressure instead")
+                if why is not None:
                     return ContactResult(
                         area=2 * np.pi, mean_pressure=np.nan, penetration=pen, friction=np.nan,
                         reduced_friction=np.nan, n_contacts=1, edges=np.zeros((0, 2)),
                         full_contact=True, converged=False, status=SolveStatus.FAILED,
-                        message="full contact on an incompressible solid fixes the penetration "
-                                f"at {1.0 - rh[0].real:.6g}; a larger one cannot be imposed",
-                        residual=np.inf, min_gap=0.0, **common)
-                pm = np.nan
+                        message=why, residual=np.inf, min_gap=0.0, **common)
+                # without adhesion the closed contact at its one penetration carries any load
+                # from the closing load up; the partial contacts close at that load as the
+                # penetration reaches it (Westergaard's p̃∞ = 1 at Δ̃ = 1), so that is the answer
+                pm = float(np.max(self.stress[3]))
+                message = (f"{message}; at the closing penetration of an incompressible solid, "
+                           "with the least load that keeps it closed (the limit of partial "
+                           "contact)")
             else:
                 pm = -(pen - 1.0 + rh[0].real) / (2 * np.pi * c0)
         sig_h = sig_h.copy()

@@ -82,7 +82,14 @@ class Solve:
         target = (Control.penetration_of(p.penetration) if p.penetration is not None
                   else Control.load_of(p.mean_pressure))
         adhesive = self.equilibrium.adhesive
-        if initial is not None and getattr(initial, "full_contact", False):
+        if not adhesive and self.closed.closes(target):
+            # the adhesionless answer does not depend on the path: the closed contact, exactly
+            # (at the one penetration of an incompressible solid's closed contact no partial
+            # contact exists: its mean gap would be zero; the approach ended there on contacts
+            # with slivers of gap at the solver's tolerance)
+            self.log.event("the closed contact carries the load without tension")
+            out = State.full_contact()
+        elif initial is not None and getattr(initial, "full_contact", False):
             out = self.path.from_full_contact(target)
         elif initial is not None:
             edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()

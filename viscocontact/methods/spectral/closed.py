@@ -4,9 +4,10 @@ They follow the conventions of :class:`~viscocontact.problem.ContactProblem`: a 
 (``u = w`` over the whole period) has the stress of the kernel's Fourier multiplier,
 ``σ̂_m = -m r̂_m/(S_m K(m))`` for ``m >= 1`` and ``σ̂_0 = -p̃∞``, area ``2π``, one contact and no
 edges; the penetration and load are tied by the mean displacement ``Δ̃ = 1 - r̂_0 - 2π c0 p̃∞``
-(so an incompressible solid, ``c0 = 0``, closes at one penetration only). It is the solution of
-an adhesionless scene when it carries no tension, ``p̃∞ >= max σ̃_osc``. Without load or
-penetration there is no contact.
+(so an incompressible solid, ``c0 = 0``, closes at one penetration only, where it carries any
+load from ``max σ̃_osc`` up: the penetration-controlled answer there is the least, the limit of
+the partial contacts). It is the solution of an adhesionless scene when it carries no tension,
+``p̃∞ >= max σ̃_osc``. Without load or penetration there is no contact.
 """
 from __future__ import annotations
 
@@ -87,7 +88,16 @@ class ClosedContact:
                     message="full contact on an incompressible solid fixes the penetration at "
                             f"{1.0 - self.mean_height:.6g}; a larger one cannot be imposed",
                     residual=np.inf, min_gap=0.0, **common)
-            pm = self.load_at(pen)
+            if c0 == 0.0:
+                # at its one penetration the closed contact carries any load from the closing
+                # load up; the partial contacts close at that load (Westergaard's p̃∞ = 1 at
+                # Δ̃ = 1), as the BEM reports it
+                pm = self.closing_load
+                message = (f"{message}; at the closing penetration of an incompressible solid, "
+                           "with the least load that keeps it closed (the limit of partial "
+                           "contact)")
+            else:
+                pm = self.load_at(pen)
         sigma = self.stress - pm
         scale = float(np.mean(np.abs(sigma)))
         slopes = self.shape.profile.slopes(self.x)
