@@ -6,6 +6,7 @@ import functools
 
 import numpy as np
 
+from ...contact import closure
 from ...contact.topology import TWO_PI
 from ...result import ContactResult, SolveStatus
 from .sets import Control
@@ -51,8 +52,7 @@ class ClosedContact:
     def mean_pressure_at(self, penetration: float) -> float:
         """``p̃∞`` of the closed contact at a penetration (NaN on an incompressible solid)."""
         _, rh, _, _ = self.stress
-        c0 = self.prep.kernel.mean
-        return -(penetration - 1.0 + rh[0].real) / (2 * np.pi * c0) if c0 != 0 else np.nan
+        return closure.load_at(penetration, rh[0].real, self.prep.kernel.mean)
 
     def largest_tension(self, mean_pressure: float) -> float:
         """The largest tensile stress of full contact at ``mean_pressure``."""
@@ -66,17 +66,11 @@ class ClosedContact:
         return self.largest_tension(mean_pressure) <= self.strength
 
     def closes(self, control: Control) -> bool:
-        """Whether the adhesionless equilibrium under ``control`` is the closed contact: it
-        carries the load without tension (``p̃∞ >= max σ̃_osc``); on an incompressible solid
-        (``c0 = 0``), whose closed contact fixes the penetration, at that penetration or beyond
-        (beyond, :meth:`result` says that it cannot be imposed)."""
+        """Whether the adhesionless equilibrium under ``control`` is the closed contact
+        (:func:`~viscocontact.contact.closure.closes`)."""
         _, rh, _, stress = self.stress
-        closing_load = float(np.max(stress))
-        if control.is_load:
-            return control.value >= closing_load
-        if self.prep.kernel.mean == 0.0:
-            return control.value >= 1.0 - rh[0].real - 1e-9
-        return self.mean_pressure_at(control.value) >= closing_load
+        return closure.closes(float(np.max(stress)), rh[0].real, self.prep.kernel.mean,
+                              **control.fields_kwargs())
 
     def holds(self, control: Control) -> bool:
         """Whether a closed contact stays closed under ``control`` (while its tension stays
@@ -101,7 +95,7 @@ class ClosedContact:
             if c0 == 0.0:
                 closing = 1.0 - rh[0].real
                 why = None
-                if abs(pen - closing) > 1e-9:
+                if not closure.at_closing_penetration(pen, rh[0].real):
                     why = (f"full contact on an incompressible solid fixes the penetration at "
                            f"{closing:.6g}; a larger one cannot be imposed")
                 elif self.adhesive:
@@ -118,11 +112,9 @@ class ClosedContact:
                 # from the closing load up; the partial contacts close at that load as the
                 # penetration reaches it (Westergaard's p̃∞ = 1 at Δ̃ = 1), so that is the answer
                 pm = float(np.max(self.stress[3]))
-                message = (f"{message}; at the closing penetration of an incompressible solid, "
-                           "with the least load that keeps it closed (the limit of partial "
-                           "contact)")
+                message += closure.AT_CLOSING_PENETRATION
             else:
-                pm = -(pen - 1.0 + rh[0].real) / (2 * np.pi * c0)
+                pm = closure.load_at(pen, rh[0].real, c0)
         sig_h = sig_h.copy()
         sig_h[0] = -pm
         sigma = np.fft.irfft(sig_h * n, n)

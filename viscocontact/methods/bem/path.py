@@ -152,9 +152,9 @@ class Path:
                 d_next = d_prev + np.clip(d_end - d_prev, -step, step)
             # a fold ahead (the edges' speed along the branch grows as 1/√(Δ̃* - Δ̃)): cross it
             # instead of failing at it and halving the step down to it
-            tangent = self.tangent(state, False) if self.quick and eq.adhesive else None
             if fresh:
                 fresh = False
+                tangent = self.tangent(state, False) if self.quick and eq.adhesive else None
                 speed = self.edge_speed(state, tangent)
                 sample = (d_prev, speed, np.size(state.edges))
                 fold = (self.fold_ahead(trend[:2], sample[:2])
@@ -183,7 +183,7 @@ class Path:
                     continue
             # the fallback march only once the step is small enough for a fold to be likely
             last = step < self.path_step / 16
-            start = self.predicted(state, d_next - d_prev)
+            start = self.predicted(state, d_next - d_prev, tangent=tangent)
             trial = eq.solve(start, Control.penetration_of(d_next), use_fallback=last,
                              budget=self.budget, fallback_budget=APPROACH_BUDGET,
                              refine=d_next == d_end, polish=d_next == d_end,
@@ -432,13 +432,15 @@ class Path:
             return None
         return t if np.all(np.isfinite(t)) else None
 
-    def predicted(self, state: State, change: float, load: bool = False) -> np.ndarray:
+    def predicted(self, state: State, change: float, load: bool = False,
+                  tangent=None) -> np.ndarray:
         """The edges predicted for a change of the penetration (``load``: of the mean pressure)
         from a converged state along its tangent (:meth:`tangent`), scaled down so that no edge
         moves by more than its contact's half-width and no gap closes by more than half; the
-        state's edges when there is no tangent or the prediction is no valid contact set."""
+        state's edges when there is no tangent or the prediction is no valid contact set.
+        ``tangent``: the state's tangent when the caller has it already."""
         x = np.asarray(state.edges, dtype=float)
-        t = self.tangent(state, load)
+        t = self.tangent(state, load) if tangent is None else tangent
         if t is None:
             return x
         move = t * change

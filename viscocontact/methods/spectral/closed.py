@@ -17,6 +17,7 @@ import attrs
 import numpy as np
 import scipy.fft
 
+from ...contact import closure
 from ...kernels.clausen import TWO_PI
 from ...result import ContactResult, SolveStatus
 from .grid import uniform_heights
@@ -60,16 +61,12 @@ class ClosedContact:
 
     def load_at(self, penetration: float) -> float:
         """``p̃∞`` of the closed contact at ``Δ̃`` (NaN when ``c0 = 0``)."""
-        c0 = self.mean_compliance
-        return -(penetration - 1.0 + self.mean_height) / (TWO_PI * c0) if c0 != 0 else np.nan
+        return closure.load_at(penetration, self.mean_height, self.mean_compliance)
 
     def closes(self, mean_pressure=None, penetration=None) -> bool:
         """Whether the adhesionless solution at this load or penetration is the closed contact."""
-        if mean_pressure is not None:
-            return mean_pressure >= self.closing_load
-        if self.mean_compliance == 0.0:
-            return penetration >= 1.0 - self.mean_height - 1e-9
-        return self.load_at(penetration) >= self.closing_load
+        return closure.closes(self.closing_load, self.mean_height, self.mean_compliance,
+                              mean_pressure, penetration)
 
     def result(self, m2: float, common: dict, mean_pressure=None, penetration=None,
                fields: bool = False, message: str = "contact closed over the period"):
@@ -80,7 +77,7 @@ class ClosedContact:
             pen = 1.0 - self.mean_height - TWO_PI * c0 * pm
         else:
             pen = float(penetration)
-            if c0 == 0.0 and abs(pen - (1.0 - self.mean_height)) > 1e-9:
+            if c0 == 0.0 and not closure.at_closing_penetration(pen, self.mean_height):
                 return ContactResult(
                     area=TWO_PI, mean_pressure=np.nan, penetration=pen, friction=np.nan,
                     reduced_friction=np.nan, n_contacts=1, edges=np.zeros((0, 2)),
@@ -93,9 +90,7 @@ class ClosedContact:
                 # load up; the partial contacts close at that load (Westergaard's p̃∞ = 1 at
                 # Δ̃ = 1), as the BEM reports it
                 pm = self.closing_load
-                message = (f"{message}; at the closing penetration of an incompressible solid, "
-                           "with the least load that keeps it closed (the limit of partial "
-                           "contact)")
+                message += closure.AT_CLOSING_PENETRATION
             else:
                 pm = self.load_at(pen)
         sigma = self.stress - pm
