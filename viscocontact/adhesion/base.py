@@ -34,6 +34,10 @@ Contract for implementers
 7. Optionally, :meth:`closed_strength` bounds the tension a closed (full-contact) interface
    carries (default: unbounded with adhesion, 0 without); a finite-range law returns its
    strength, and full contact with a larger tension is not an equilibrium.
+8. Optionally, :meth:`cohesive_law` gives the model's traction-separation law as a uniform
+   cohesive stress acting below a gap (Dugdale); the spectral method's uniform grid applies it
+   cell by cell (:mod:`viscocontact.methods.spectral.cohesive`). A model without one (the
+   default, ``None``) has no grid form: its adhesive scenes need the boundary-element method.
 
 Every method receives an :class:`~viscocontact.contact.edges.EdgeContext`, which computes
 stress-intensity factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
@@ -107,6 +111,12 @@ class AdhesionModel(abc.ABC):
         opening: 0 without adhesion, unbounded for adhesion of vanishing range (a closed
         interface has no flaw to open from); a finite-range law overrides it with its strength."""
         return np.inf if self.work_of_adhesion > 0 else 0.0
+
+    def cohesive_law(self, amplitude: float) -> tuple[float, float, float] | None:
+        """``(σ̃0, η, a0)``: a uniform tension σ̃0 (eq. 4.17 units) wherever the gap, in units
+        of the amplitude, is below η, and the length ``q0a0`` that its zones span at least
+        (the grid must resolve it); None when the model has no such law (contract item 8)."""
+        return None
 
     @abc.abstractmethod
     def residuals(self, ctx) -> np.ndarray:

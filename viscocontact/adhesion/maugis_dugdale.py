@@ -99,6 +99,13 @@ class MaugisDugdale(AdhesionModel):
         (Dugdale, ``d = πK²/(8σ0²)`` with ``G = Δγ``); ``inf`` without adhesion."""
         return self.range**2 / (4.0 * self.gamma) if self.gamma > 0 else np.inf
 
+    def cohesive_law(self, amplitude: float) -> tuple[float, float, float] | None:
+        """``(σ̃0, η, q0a0)`` for the spectral method's grid (:meth:`strength`,
+        :meth:`opening`, :attr:`quasi_static_zone`); None without adhesion."""
+        if self.gamma <= 0:
+            return None
+        return self.strength(amplitude), self.opening(amplitude), self.quasi_static_zone
+
     def resolved_lengths(self) -> tuple[float, ...]:
         return (ZONE_RESOLUTION * self.quasi_static_zone,) if self.gamma > 0 else ()
 

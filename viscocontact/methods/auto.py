@@ -3,7 +3,9 @@
 An adhesionless equilibrium is unique and does not depend on the loading path, so it needs no
 approach path and no edge energy balance: a uniform-grid spectral solve finds it directly, to a
 stated tolerance. An adhesive scene needs the energy balance at every edge, which only the BEM
-has. When the spectral method cannot reach the requested tolerance on the largest grid it
+has (the spectral method applies a finite-range cohesive law on its grid, but from the
+adhesionless contact, not along the loading path, so it serves as a cross-check and is asked
+for by name). When the spectral method cannot reach the requested tolerance on the largest grid it
 allows, the BEM finishes the job seeded with the grid's contact set; when the grid solve does not
 converge at all (a very stiff solid at ζ ~ 1, whose trailing-edge layer the grid does not
 resolve), the BEM solves the scene from the caller's start.
@@ -47,6 +49,13 @@ class Auto(SolutionMethod):
         from .bem import BEM
 
         spectral = self.spectral()
+        gamma = float(problem.adhesion.work_of_adhesion)
+        if gamma > 0:
+            # the grid applies a cohesive law too (a cross-check of the BEM), but an adhesive
+            # equilibrium depends on the path that reached it, which the BEM follows
+            return BEM(), (f"adhesive scene (work of adhesion {gamma:g}): the equilibrium "
+                           "depends on the loading path, which the boundary-element method "
+                           "follows from first touch")
         reason = spectral.unsupported(problem)
         if reason is None:
             return spectral, ("adhesionless scene: the equilibrium does not depend on the path; "

@@ -63,14 +63,17 @@ class ClosedContact:
         """``p̃∞`` of the closed contact at ``Δ̃`` (NaN when ``c0 = 0``)."""
         return closure.load_at(penetration, self.mean_height, self.mean_compliance)
 
-    def closes(self, mean_pressure=None, penetration=None) -> bool:
-        """Whether the adhesionless solution at this load or penetration is the closed contact."""
-        return closure.closes(self.closing_load, self.mean_height, self.mean_compliance,
-                              mean_pressure, penetration)
+    def closes(self, mean_pressure=None, penetration=None, strength: float = 0.0) -> bool:
+        """Whether the solution at this load or penetration is the closed contact: it carries
+        no tension beyond ``strength`` (0: the adhesionless answer; a cohesive law's σ̃0)."""
+        return closure.closes(self.closing_load - strength, self.mean_height,
+                              self.mean_compliance, mean_pressure, penetration)
 
     def result(self, m2: float, common: dict, mean_pressure=None, penetration=None,
-               fields: bool = False, message: str = "contact closed over the period"):
-        """The :class:`ContactResult` of the closed contact (as the BEM reports it)."""
+               fields: bool = False, message: str = "contact closed over the period",
+               strength: float = 0.0):
+        """The :class:`ContactResult` of the closed contact (as the BEM reports it); it fails
+        where it would carry more tension than ``strength``."""
         c0 = self.mean_compliance
         if mean_pressure is not None:
             pm = float(mean_pressure)
@@ -89,7 +92,7 @@ class ClosedContact:
                 # at its one penetration the closed contact carries any load from the closing
                 # load up; the partial contacts close at that load (Westergaard's p̃∞ = 1 at
                 # Δ̃ = 1), as the BEM reports it
-                pm = self.closing_load
+                pm = self.closing_load - strength
                 message += closure.AT_CLOSING_PENETRATION
             else:
                 pm = self.load_at(pen)
@@ -97,7 +100,7 @@ class ClosedContact:
         scale = float(np.mean(np.abs(sigma)))
         slopes = self.shape.profile.slopes(self.x)
         mu = float(np.mean(sigma * slopes) / pm) if abs(pm) > 1e-12 * scale else np.nan
-        ok = bool(np.all(sigma <= 1e-9))
+        ok = bool(np.all(sigma <= strength + 1e-9))
         fld = ({"x": self.x, "pressure": -sigma, "displacement": self.heights - 1.0 + pen,
                 "gap": np.zeros_like(self.x)} if fields else None)
         return ContactResult(
@@ -105,7 +108,10 @@ class ClosedContact:
             reduced_friction=mu / np.sqrt(m2), n_contacts=1, edges=np.zeros((0, 2)),
             full_contact=True, converged=ok,
             status=SolveStatus.CONVERGED if ok else SolveStatus.FAILED,
-            message=message if ok else "full contact would carry tension without adhesion",
+            message=message if ok else (
+                "full contact would carry tension without adhesion" if strength == 0.0 else
+                f"full contact would carry tension {float(np.max(sigma)):.6g} beyond the "
+                f"cohesive stress {strength:.6g}"),
             residual=0.0, min_gap=0.0, fields=fld, **common)
 
 

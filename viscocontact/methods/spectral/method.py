@@ -22,6 +22,7 @@ from ...problem import Prepared
 from ...result import ContactResult, SolveStatus
 from ..base import SolutionMethod
 from .closed import ClosedContact, no_contact_result
+from .cohesive import CELLS_PER_ZONE, GridLaw, cohesive_solve, law_violation, zone_cells
 from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
 from .operator import OperatorCache, convolve, invert, power
@@ -83,25 +84,46 @@ class GridMeasures:
     edges: np.ndarray
     area: float
     friction: float
+    #: cells in contact (None: the loaded ones, ``p > 0``; a cohesive law's contact cells)
+    contact: np.ndarray | None = None
+    #: share of each cell under a cohesive law's stress (None: no law)
+    weights: np.ndarray | None = None
+
+    @property
+    def in_contact(self) -> np.ndarray:
+        return self.solution.pressure > 0 if self.contact is None else self.contact
 
     @property
     def closed(self) -> bool:
-        return bool(np.all(self.solution.pressure > 0))
+        return bool(np.all(self.in_contact))
 
 
-def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int = 1
-            ) -> GridMeasures:
-    """Contacts, area (sub-cell edges) and friction (eq. 4.16) of a grid solution."""
+def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int = 1,
+            law: GridLaw | None = None, contact=None, weights=None) -> GridMeasures:
+    """Contacts, area (sub-cell edges) and friction (eq. 4.16) of a grid solution.
+
+    With a cohesive ``law`` the contacts are the cells ``contact`` and their edges are located
+    from the shifted pressure ``p + σ̃0``, which has the adhesionless square-root field at a
+    Maugis–Dugdale edge (the gap outside rises as ``s^{3/2}`` there too); the friction counts the
+    cohesive stress with the contact stress, and the load may be tensile.
+    """
     p = solution.pressure
     pm = float(p.mean())
-    mu = float(-(p @ grid.rise) / (TWO_PI * pm)) if pm > 0 else float("nan")
-    if np.all(p > 0):
+    if law is None:
+        contact = p > 0
+        mu = float(-(p @ grid.rise) / (TWO_PI * pm)) if pm > 0 else float("nan")
+    else:
+        mu = float(-(p @ grid.rise) / (TWO_PI * pm)) if pm != 0 else float("nan")
+    extra = dict(contact=None if law is None else contact, weights=weights)
+    if np.all(contact):
         return GridMeasures(grid=grid, solution=solution, edges=np.zeros((0, 2)), area=TWO_PI,
-                            friction=mu)
+                            friction=mu, **extra)
     gap = convolve(p, eigenvalues, workers) - (grid.heights - 1.0 + solution.penetration)
-    edges = contact_edges(grid.start, grid.cell, p, gap)
-    area = float(min(np.sum(edges[:, 1] - edges[:, 0]), TWO_PI))
-    return GridMeasures(grid=grid, solution=solution, edges=edges, area=area, friction=mu)
+    shifted = p if law is None else np.where(contact, p + law.strength, 0.0)
+    edges = contact_edges(grid.start, grid.cell, shifted, gap)
+    area = float(min(np.sum(edges[:, 1] - edges[:, 0]), TWO_PI)) if edges.size else 0.0
+    return GridMeasures(grid=grid, solution=solution, edges=edges, area=area, friction=mu,
+                        **extra)
 
 
 def changes(coarse: GridMeasures, fine: GridMeasures, m2: float,
@@ -225,10 +247,39 @@ class Spectral(SolutionMethod):
     # ---- the interface ----------------------------------------------------------------------
     def unsupported(self, problem) -> str | None:
         gamma = float(problem.adhesion.work_of_adhesion)
-        if gamma > 0:
+        if not gamma > 0:
+            return None
+        law = self.law(problem)
+        if law is None:
             return (f"adhesive scene (work of adhesion {gamma:g}): a uniform grid has no edge "
-                    "energy balance; use the boundary-element method")
+                    "energy balance; use the boundary-element method (or a finite-range law, "
+                    "maugis-dugdale, which the grid applies cell by cell)")
+        if problem.mean_pressure is not None and not problem.mean_pressure > 0:
+            return (f"cohesive law under load control at p̃∞ = {problem.mean_pressure:g}: the "
+                    "grid starts from the adhesionless contact, which needs p̃∞ > 0; use "
+                    "penetration control or the boundary-element method")
+        need = self.zone_points(law)
+        if need > self.max_points:
+            return (f"the cohesive zone q0a0 = {law.zone:.3g} needs {need} cells "
+                    f"({CELLS_PER_ZONE:g} per zone) > max_points = {self.max_points}: a short-"
+                    "range law (high Tabor parameter) is for the boundary-element method")
         return None
+
+    @staticmethod
+    def law(problem) -> GridLaw | None:
+        """The scene's cohesive law on the grid (:meth:`AdhesionModel.cohesive_law`), None
+        without one."""
+        if not float(problem.adhesion.work_of_adhesion) > 0:
+            return None
+        law = problem.adhesion.cohesive_law(float(problem.profile.peak()[1]))
+        return None if law is None else GridLaw(strength=float(law[0]), opening=float(law[1]),
+                                                zone=float(law[2]))
+
+    @staticmethod
+    def zone_points(law: GridLaw) -> int:
+        """Cells (a power of two) that give the quasi-static zone :data:`CELLS_PER_ZONE`."""
+        want = CELLS_PER_ZONE * TWO_PI / law.zone
+        return 1 << int(math.ceil(math.log2(max(want, 2.0))))
 
     def prepare(self, problem) -> SpectralPrepared:
         """The problem's prepared tables with an empty operator cache (pass as ``prepared=``)."""
@@ -258,24 +309,31 @@ class Spectral(SolutionMethod):
         why = self.unsupported(problem)
         if why is not None:
             raise ValidationError("ContactProblem.adhesion", problem.adhesion,
-                                  "an adhesionless model (work_of_adhesion = 0) for the spectral "
-                                  "method")
+                                  f"a scene the spectral method solves ({why})")
         prep = self._prepared(problem, prepared)
+        law = self.law(problem)
         load, pen = problem.mean_pressure, problem.penetration
         events: list[str] = []
         extras = {"method": self.name, "error_estimate": 0.0, "points": 0, "tolerance_met": True,
                   "friction_dissipation": np.nan, "seconds": 0.0, "events": events}
         common = dict(iterations=0, function_evaluations=0, zeta=float(problem.zeta),
                       edge_perturbation=0.0, extras=extras)
-        if (load is not None and not load > 0) or (pen is not None and not pen > 0):
+        # with a cohesive law the peak attracts the solid from a gap below the range on
+        reach = 0.0 if law is None else -law.opening
+        if (load is not None and not load > 0) or (pen is not None and not pen > reach):
             extras["seconds"] = time.perf_counter() - started
             return no_contact_result(common, pen)
         closed = ClosedContact.of(prep.shape, prep.kernel, 0)
+        # closed at once only where it carries the load without tension: with a cohesive law a
+        # closed contact that holds some tension is one equilibrium, the partial contact
+        # reached from the adhesionless one another (the boundary-element method's, from first
+        # touch), and the grid finds the latter
         if closed.closes(load, pen):
             extras["seconds"] = time.perf_counter() - started
             events.append("the closed contact carries the load without tension")
-            return closed.result(prep.m2, common, load, pen, fields)
-        return self._ladder(problem, prep, initial, fields, started, events, extras, closed)
+            return closed.result(prep.m2, common, load, pen, fields,
+                                 strength=0.0 if law is None else law.strength)
+        return self._ladder(problem, prep, initial, fields, started, events, extras, closed, law)
 
     def plan_steps(self, problem, prepared) -> tuple:
         from ...plan import PlanStep
@@ -284,6 +342,7 @@ class Spectral(SolutionMethod):
         if why is not None:
             return (PlanStep(stage="method", choice="spectral: not applicable", reason=why),)
         prep = self._prepared(problem, prepared)
+        law = self.law(problem)
         wavelength = prep.shape.wavelength
         if self.points is not None:
             grid = PlanStep(stage="grid", choice=f"{self.points} cells, estimate from "
@@ -291,6 +350,8 @@ class Spectral(SolutionMethod):
             n = self.points
         else:
             n = first_points(wavelength, self.tolerance, self.max_points)
+            if law is not None:
+                n = min(max(n, self.zone_points(law)), self.max_points)
             per = CELLS_PER_WAVELENGTH * (1e-3 / self.tolerance) ** (1.0 / ORDER_AREA)
             why_grid = (f"{per:.3g} cells per shortest wavelength λ_min = {wavelength:.4g} for "
                         f"tolerance {self.tolerance:g}" if wavelength else
@@ -318,15 +379,27 @@ class Spectral(SolutionMethod):
         control = ("load control, p̃∞ = " + f"{problem.mean_pressure:g}"
                    if problem.mean_pressure is not None
                    else "penetration control, Δ̃ = " + f"{problem.penetration:g}")
+        cohesive = () if law is None else (PlanStep(
+            stage="adhesion",
+            choice=f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the gap "
+                   f"is below η = {law.opening:.4g}; tips between cells by the secant of the "
+                   f"gap; {zone_cells(law, n):.0f} cells per quasi-static zone "
+                   f"q0a0 = {law.zone:.3g} on the first trusted grid",
+            reason=f"{type(problem.adhesion).__name__}: at least {CELLS_PER_ZONE:g} cells per "
+                   "zone; from the adhesionless contact, not along a loading path (a JKR-like "
+                   "scene with several equilibria may end on another one than the BEM's)"),)
         return (PlanStep(stage="method", choice="spectral: uniform grid, FFT products",
-                         reason="adhesionless scene"),
-                grid, operator, solver,
+                         reason="adhesionless scene" if law is None else
+                                "finite-range cohesive law (wide zones)"),
+                grid, operator, solver, *cohesive,
                 PlanStep(stage="control", choice=control,
                          reason="the closed contact is returned directly when it carries the "
                                 "load without tension"),
                 PlanStep(stage="edges", choice="sub-cell edges: left ones from the pressures of "
                                                "the two outermost loaded cells, right ones from "
-                                               "the gaps of the two first free cells",
+                                               "the gaps of the two first free cells" + (
+                                                   "" if law is None else " (pressures shifted "
+                                                   "by σ̃0: the Maugis–Dugdale edge field)"),
                          reason="universal square-root edge field (adhesionless); the memory "
                                 "of a viscoelastic solid spoils the other side"),
                 PlanStep(stage="estimate",
@@ -348,12 +421,15 @@ class Spectral(SolutionMethod):
             return self.prepare(problem)
         return SpectralPrepared(kernel=prepared.kernel, shape=prepared.shape, m2=prepared.m2)
 
-    def _ladder(self, problem, prep, initial, fields, started, events, extras, closed):
+    def _ladder(self, problem, prep, initial, fields, started, events, extras, closed,
+                law=None):
         load, pen = problem.mean_pressure, problem.penetration
         if self.points is not None:
             target = final = self.points
         else:
             target = first_points(prep.shape.wavelength, self.tolerance, self.max_points)
+            if law is not None:                # the cohesive zones resolved from the start
+                target = min(max(target, self.zone_points(law)), self.max_points)
             final = self.max_points
             # a warm start contributes its contact set only (not the grid it was computed on):
             # a result and its edges, as a study stores them, give the same answer
@@ -376,12 +452,19 @@ class Spectral(SolutionMethod):
         errors, last = (np.inf, np.inf), None
         while True:
             op = prep.operators.circulant(prep.kernel, grid.points)
-            sol = self._solve_grid(op, grid, load, pen, start,
-                                   None if previous is None else previous.solution.penetration)
+            start_penetration = None if previous is None else previous.solution.penetration
+            if law is None:
+                sol = self._solve_grid(op, grid, load, pen, start, start_penetration)
+                current = measure(grid, sol, op.eigenvalues, self.workers or 1)
+            else:
+                solved = self._solve_cohesive(op, grid, load, pen, start, start_penetration,
+                                              law, first=previous is None)
+                sol = solved.solution
+                current = measure(grid, sol, op.eigenvalues, self.workers or 1, law=law,
+                                  contact=solved.contact, weights=solved.weights)
             iterations += sol.iterations
             applications += sol.applications
             events.append(f"{grid.points} cells: {sol.solver}, {sol.message}")
-            current = measure(grid, sol, op.eigenvalues, self.workers or 1)
             if not sol.converged:
                 break
             if previous is not None:
@@ -395,7 +478,7 @@ class Spectral(SolutionMethod):
                               "grid doubled")
             previous = current
             grid = UniformGrid.of(prep.shape, 2 * grid.points)
-            start = next_start(grid, current)
+            start = next_start(grid, current) if law is None else refine(sol.pressure)
         error = float(max(errors))
         extras.update(error_estimate=error, points=current.grid.points,
                       tolerance_met=bool(error <= self.tolerance),
@@ -407,7 +490,7 @@ class Spectral(SolutionMethod):
             events.append(f"tolerance {self.tolerance:g} not met: estimate {error:.2g} at "
                           f"{current.grid.points} cells")
         result = self._assemble(problem, prep, current, iterations, applications, fields,
-                                extras, closed)
+                                extras, closed, law)
         extras["seconds"] = time.perf_counter() - started
         return result
 
@@ -446,8 +529,29 @@ class Spectral(SolutionMethod):
         return attrs.evolve(sol, iterations=sol.iterations + its,
                             applications=sol.applications + apps)
 
+    def _solve_cohesive(self, op, grid, load, pen, start, start_penetration, law, first):
+        """A cohesive grid solve (:func:`~.cohesive.cohesive_solve`); on the first grid it
+        starts from the adhesionless solution (load control; a warm start's set seeds it) or
+        from no load (penetration control)."""
+        its = apps = 0
+        if first:
+            if load is not None:
+                bare = self._solve_grid(op, grid, load, None, start, None)
+                its, apps = bare.iterations, bare.applications
+                start, start_penetration = bare.pressure, bare.penetration
+            else:
+                start = np.zeros(grid.points)
+        solved = cohesive_solve(op, grid.heights, law, mean_pressure=load, penetration=pen,
+                                start=start, start_penetration=start_penetration,
+                                tolerance=self.residual, krylov_tolerance=self.krylov_tolerance,
+                                max_updates=self.max_updates,
+                                max_iterations=self.max_iterations, workers=self.workers or 1)
+        sol = solved.solution
+        return attrs.evolve(solved, solution=attrs.evolve(
+            sol, iterations=sol.iterations + its, applications=sol.applications + apps))
+
     def _assemble(self, problem, prep, current: GridMeasures, iterations, applications, fields,
-                  extras, closed) -> ContactResult:
+                  extras, closed, law=None) -> ContactResult:
         grid, sol = current.grid, current.solution
         workers = self.workers or 1
         common = dict(iterations=int(iterations), function_evaluations=int(applications),
@@ -455,13 +559,25 @@ class Spectral(SolutionMethod):
         if current.closed:
             return closed.result(prep.m2, common, problem.mean_pressure, problem.penetration,
                                  fields, message="every cell loaded: contact closed over the "
-                                                 "period to the grid's resolution")
+                                                 "period to the grid's resolution",
+                                 strength=0.0 if law is None else law.strength)
         p = sol.pressure
         op = prep.operators.circulant(prep.kernel, grid.points)
         u = convolve(p, op.eigenvalues, workers)
         gap = u - (grid.heights - 1.0 + sol.penetration)
-        loaded = p > 0
+        loaded = current.in_contact
         pm = float(p.mean())
+        if law is not None:
+            w = current.weights
+            alone = sum(1 for f, n in runs(w > 0)
+                        if not loaded[(f + np.arange(n)) % grid.points].any())
+            extras["cohesive"] = {
+                "strength": law.strength, "opening": law.opening, "zone": law.zone,
+                "cells_per_zone": zone_cells(law, grid.points),
+                "cohesive_cells": int(np.sum((w > 0) & ~loaded)),
+                # the zones' share of p̃∞ (tensile)
+                "load": float(-law.strength * np.sum(np.where(loaded, 0.0, w)) / grid.points),
+                "tension_without_contact": int(alone)}
         loss = prep.operators.dissipation(prep.kernel, grid.points)
         extras["friction_dissipation"] = prep.shape.amplitude * power(p, loss, workers) / pm
         extras["solver"] = sol.solver
@@ -478,6 +594,7 @@ class Spectral(SolutionMethod):
                      f"{sol.message}") + ("" if extras["tolerance_met"] else
                                           f"; tolerance {self.tolerance:g} not met (estimate "
                                           f"{extras['error_estimate']:.2g})"),
-            residual=violation(gap, loaded),
+            residual=(violation(gap, loaded) if law is None
+                      else law_violation(p, gap, loaded, current.weights, law)),
             min_gap=float(np.min(gap[~loaded])) if (~loaded).any() else 0.0,
             fields=fld, **common)

@@ -1,0 +1,321 @@
+r"""A Dugdale cohesive law on the uniform grid: the spectral method's finite-range adhesion.
+
+The law of :class:`~viscocontact.adhesion.MaugisDugdale` cell by cell: a uniform tensile stress
+σ̃0 wherever the gap lies in ``[0, η)`` (``η = h̃0/Λ̃``, the range in units of the amplitude),
+nothing where it is ``η`` or more. With the pressure ``p`` (compressive positive, as in
+:mod:`~viscocontact.methods.spectral.solvers`) and the gap ``g = A p - (r̃ - 1 + Δ̃)``, every cell is
+
+* in contact: ``g = 0`` and ``p >= -σ̃0``;
+* cohesive: ``p = -σ̃0`` and ``0 <= g < η``;
+* free: ``p = 0`` and ``g >= η``.
+
+No edge condition is imposed: the stress at a contact edge comes out bounded (the
+Maugis–Dugdale condition) because the cells carry at most σ̃0 of tension, and a cohesive run
+needs no contact beside it (tension without contact). Where the law acts (the *ranged* cells
+``W``, contact and cohesive) the shifted pressure ``q = p + σ̃0`` obeys the adhesionless
+conditions ``q >= 0``, ``g >= 0``, ``q g = 0``, with the heights raised by the displacement of the
+cohesive stress, ``r̃ + σ̃0 A 1_W``, and in load control the load raised by ``σ̃0 |W|/N``. So for a
+given ``W`` one adhesionless grid solve (Polonsky-Keer or the active set) gives the equilibrium,
+and ``W`` is found by a fixed point: ``W ← {q > 0} ∪ {g < η}`` until it repeats
+(:func:`cohesive_solve`). When a set comes back that is not the last one (the outer iteration
+cycles), the union of the sets of the cycle is taken once; a second cycle is reported as not
+converged.
+
+The law is non-convex (the traction jumps at ``g = η``), so a scene can have several equilibria
+(the JKR-like branches); this iteration starts from the adhesionless solution, or from the
+previous grid's, and finds the one it reaches from there. The cross-check it serves is the
+low-Tabor side, where the zones are wide and the equilibrium is unique: a zone must span many
+cells (:func:`zone_cells`).
+"""
+from __future__ import annotations
+
+import attrs
+import numpy as np
+
+from .operator import convolve, invert
+from .solvers import GridSolution, active_set, polonsky_keer, violation
+
+#: Tolerance of the Polonsky-Keer start of an active-set solve (as the method's first grid).
+PRESOLVE = 1e-6
+
+#: Most inner solves per grid.
+MAX_SETS = 60
+#: Largest change of a tip share (a fraction of a cell) at which the tips have settled: the load
+#: then moves by less than ``σ̃0 h`` times this per tip.
+TIP_TOLERANCE = 1e-9
+#: Fewest cells per quasi-static Dugdale zone ``h̃0²/(4γ̃)`` on the first trusted grid (a
+#: viscoelastic zone lies within ``[a0/2, βa0]``).
+CELLS_PER_ZONE = 32.0
+
+
+@attrs.frozen(kw_only=True)
+class GridLaw:
+    """The cohesive law on the grid, in the units of the grid solve.
+
+    Attributes
+    ----------
+    strength : float
+        ``σ̃0``, the cohesive tension (> 0).
+    opening : float
+        ``η = h̃0/Λ̃``, the gap up to which it acts (> 0).
+    zone : float
+        The quasi-static Dugdale zone ``q0 a0 = h̃0²/(4γ̃)`` (``x̃`` units), which sets the grid.
+    """
+
+    strength: float
+    opening: float
+    zone: float
+
+
+def zone_cells(law: GridLaw, points: int) -> float:
+    """Cells of a grid of ``points`` cells per quasi-static zone."""
+    return law.zone * points / (2.0 * np.pi)
+
+
+def ranged_heights(heights, weights, law: GridLaw, eigenvalues, workers: int = 1) -> np.ndarray:
+    """``r̃ + σ̃0 A w``: the heights that make the shifted pressure ``q = p + σ̃0 w`` an
+    adhesionless problem, ``w`` the share of each cell under the cohesive stress."""
+    return np.asarray(heights, dtype=float) + law.strength * convolve(
+        np.asarray(weights, dtype=float), eigenvalues, workers)
+
+
+def _runs(inside: np.ndarray) -> list[tuple[int, int]]:
+    """``(first, last)`` of each cyclic run of True cells, ``last >= first`` (unwrapped)."""
+    from .edges import runs
+
+    return [(f, f + n - 1) for f, n in runs(inside)]
+
+
+def _interp(values: np.ndarray, position: float) -> float:
+    """``values`` (periodic, at the integer cell coordinates) at ``position``, linearly."""
+    k = int(np.floor(position))
+    t = position - k
+    n = values.size
+    return float((1.0 - t) * values[k % n] + t * values[(k + 1) % n])
+
+
+def tip_positions(gap, contact, law: GridLaw) -> list[tuple[float, float]]:
+    """The extent ``[L, R]`` (cell coordinates: cell ``k`` spans ``[k - 1/2, k + 1/2]``) of each
+    run of cells in range (in contact or with ``g < η``), its tips ``g = η`` placed by linear
+    interpolation between the last centre in range and the first out of it."""
+    g = np.asarray(gap, dtype=float)
+    inside = np.asarray(contact, bool) | (g < law.opening)
+    n = g.size
+    if inside.all():
+        return [(-0.5, n - 0.5)]
+    out = []
+    for first, last in _runs(inside):
+        ends = []
+        for a, b in ((first, first - 1), (last, last + 1)):
+            rise = g[b % n] - g[a % n]
+            t = (law.opening - g[a % n]) / rise if rise > 0 else 0.5
+            ends.append(a + (b - a) * min(max(t, 0.0), 1.0))
+        out.append((ends[0], ends[1]))
+    return out
+
+
+def tip_weights(extents, points: int) -> np.ndarray:
+    """The share of each cell under the cohesive stress for runs of extents ``[L, R]``
+    (:func:`tip_positions`): the cells within a run wholly, the two cells at each tip in
+    proportion (a tip quantised to whole cells moves the load by up to ``σ̃0 h`` per tip, a
+    first-order error that, on a slow solid, drowns its small friction)."""
+    w = np.zeros(points)
+    for lo, hi in extents:
+        if hi - lo >= points:
+            return np.ones(points)
+        k = np.arange(int(np.floor(lo + 0.5)), int(np.floor(hi + 0.5)) + 1)
+        share = np.clip(np.minimum(k + 0.5, hi) - np.maximum(k - 0.5, lo), 0.0, 1.0)
+        np.add.at(w, k % points, share)
+    return np.minimum(w, 1.0)
+
+
+def law_violation(pressure, gap, contact, weights, law: GridLaw) -> float:
+    """The largest violation of the cohesive law, in units of the amplitude: the adhesionless
+    conditions of ``q = p + σ̃0 w`` (:func:`~.solvers.violation` on the contact cells), ``g < η``
+    on the cells wholly under the cohesive stress and ``g >= η`` on the free ones (the cells
+    that hold a tip straddle ``η``)."""
+    g = np.asarray(gap, float)
+    w = np.asarray(weights, float)
+    out = violation(g, contact)
+    cohesive = (w == 1.0) & ~contact
+    free = w == 0.0
+    if cohesive.any():
+        out = max(out, float(np.max(g[cohesive] - law.opening, initial=0.0)))
+    if free.any():
+        out = max(out, float(np.max(law.opening - g[free], initial=0.0)))
+    return out
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class CohesiveSolution:
+    """The outcome of one cohesive grid solve.
+
+    Attributes
+    ----------
+    solution : GridSolution
+        ``pressure`` is the cell pressure ``p`` (tension negative); the counts add up over the
+        inner solves.
+    contact : ndarray of bool
+        Cells in contact (``q > 0``).
+    weights : ndarray
+        Share of each cell under the cohesive stress (1 in contact and in the zones, between 0
+        and 1 at the tips).
+    gap : ndarray
+        ``g`` at the cell centres.
+    sets : int
+        Inner solves (ranged sets and tip positions tried).
+    """
+
+    solution: GridSolution
+    contact: np.ndarray
+    weights: np.ndarray
+    gap: np.ndarray
+    sets: int
+
+    @property
+    def ranged(self) -> np.ndarray:
+        """Cells where the law acts (contact, zones and tips)."""
+        return self.weights > 0.0
+
+
+def _matches(old, new, points: int) -> bool:
+    """Whether two lists of run extents describe the same runs (same count, each new run
+    overlapping its old one): the tips can then be moved by secants."""
+    if len(old) != len(new):
+        return False
+    for (a, b), (c, d) in zip(old, new):
+        if b - a >= points or d - c >= points or d < a or c > b:
+            return False
+    return True
+
+
+def _secant(position, residual, before, slope_hint):
+    """The next position of one tip from its last two residuals (``before``: the previous
+    ``(position, residual)``), or None when they give no usable slope (same position, or a
+    slope against the gap's own or far flatter than a twentieth of it)."""
+    if before is None or position == before[0]:
+        return None
+    slope = (residual - before[1]) / (position - before[0])
+    if not slope * slope_hint > 0 or abs(slope) < 0.05 * abs(slope_hint):
+        return None
+    return position - residual / slope
+
+
+def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, penetration=None,
+                   start=None, start_penetration=None, tolerance: float = 1e-10,
+                   krylov_tolerance: float = 1e-10, max_updates: int = 100,
+                   max_iterations: int = 20000, max_sets: int = MAX_SETS,
+                   workers: int = 1) -> CohesiveSolution:
+    """The equilibrium of the cohesive law on one grid (module docstring).
+
+    Unknowns are the tips of the runs of cells in range (:func:`tip_positions`), continuous,
+    with the cells at each tip sharing the stress in proportion (:func:`tip_weights`). Each
+    inner solve takes them as given; a tip's residual is the gap there less η. The first step
+    and any step after the runs changed places every tip where the last solution's gap crosses
+    η (a fixed point, which on its own creeps: the new stress pulls the next cell into range,
+    a cell per solve); then each tip moves by the secant of its last two residuals. Converged
+    when the runs are the same and every tip's residual is within ``10·tolerance``.
+
+    Parameters
+    ----------
+    circulant : Circulant
+    heights : ndarray
+        ``r̃`` at the cell centres.
+    law : GridLaw
+    mean_pressure, penetration : float
+        Exactly one: ``p̃∞ > 0`` (load control) or ``Δ̃`` (penetration control).
+    start : ndarray
+        Starting cell pressure ``p`` (tension negative), e.g. the adhesionless solution or the
+        previous grid's carried over.
+    start_penetration : float
+        ``Δ̃`` of ``start`` (load control).
+    """
+    lam = circulant.eigenvalues
+    r = np.asarray(heights, dtype=float)
+    n = r.size
+    load = mean_pressure is not None
+    delta = float(penetration) if not load else float(start_penetration)
+    p = np.asarray(start, dtype=float).copy()
+    g = convolve(p, lam, workers) - (r - 1.0 + delta)
+    contact = p > 0.0
+    extents = tip_positions(g, contact, law)
+    before = None                 # the previous solve's extents and tip residuals
+    iterations = applications = 0
+    sol = None
+    converged = False
+    w = tip_weights(extents, n)
+    message = f"the cohesive tips did not settle in {max_sets} solves"
+    for k in range(1, max_sets + 1):
+        w = tip_weights(extents, n)
+        shifted = ranged_heights(r, w, law, lam, workers)
+        q0 = np.maximum(p + law.strength * w, 0.0)
+        if not q0.any():
+            q0[int(np.argmax(shifted))] = 1.0
+        common = dict(tolerance=tolerance, workers=workers, start=q0)
+        if load:
+            common["mean_pressure"] = float(mean_pressure) + law.strength * float(w.mean())
+        else:
+            common["penetration"] = float(penetration)
+        if circulant.symmetric:
+            sol = polonsky_keer(lam, shifted, max_iterations=max_iterations,
+                                preconditioner=circulant.inverse, **common)
+            counts = [sol]
+        else:
+            counts = []
+            sol = None
+            if k > 1:                 # from the last solution: the tips moved a little
+                sol = active_set(circulant, shifted, start_penetration=delta if load else None,
+                                 krylov_tolerance=krylov_tolerance, max_iterations=max_updates,
+                                 **common)
+                counts.append(sol)
+            if sol is None or not sol.converged:
+                # a start far from the solution (the adhesionless contact, a coarser grid's
+                # carried over): the active set then needs damped steps by the dozen (on a
+                # sinusoid at ζ = 1e-2 it failed in 100), so its start is the solution for
+                # the operator's symmetric part, as on the spectral method's first grid
+                sym = circulant.symmetric_part()
+                first = polonsky_keer(sym, shifted, max_iterations=max_iterations,
+                                      preconditioner=invert(sym),
+                                      **dict(common, tolerance=PRESOLVE))
+                sol = active_set(circulant, shifted, start_penetration=first.penetration
+                                 if load else None, krylov_tolerance=krylov_tolerance,
+                                 max_iterations=max_updates, **dict(common, start=first.pressure))
+                counts += [first, sol]
+        iterations += sum(c.iterations for c in counts)
+        applications += sum(c.applications for c in counts)
+        q, delta = sol.pressure, float(sol.penetration)
+        p = q - law.strength * w
+        g = convolve(p, lam, workers) - (r - 1.0 + delta)
+        contact = q > 0.0
+        if not sol.converged:
+            message = f"inner solve: {sol.message}"
+            break
+        fresh = tip_positions(g, contact, law)
+        if not _matches(extents, fresh, n):
+            extents, before = fresh, None           # the runs changed: start the tips again
+            continue
+        residuals = [(_interp(g, lo) - law.opening, _interp(g, hi) - law.opening)
+                     for lo, hi in extents]
+        if max(abs(v) for pair in residuals for v in pair) <= 10.0 * tolerance:
+            converged = True
+            break
+        moved = []
+        for j, ((lo, hi), (r_lo, r_hi), (f_lo, f_hi)) in enumerate(zip(extents, residuals,
+                                                                        fresh)):
+            old = None if before is None else before[j]
+            new_lo = _secant(lo, r_lo, None if old is None else (old[0][0], old[1][0]),
+                             _interp(g, lo + 0.5) - _interp(g, lo - 0.5))
+            new_hi = _secant(hi, r_hi, None if old is None else (old[0][1], old[1][1]),
+                             _interp(g, hi + 0.5) - _interp(g, hi - 0.5))
+            moved.append((f_lo if new_lo is None else new_lo, f_hi if new_hi is None else new_hi))
+        before = list(zip(extents, residuals))
+        extents = moved
+    res = law_violation(p, g, contact, w, law)
+    if converged:
+        message = (f"converged: {int(contact.sum())} contact and "
+                   f"{int(np.sum((w > 0) & ~contact))} cohesive cells after {k} inner solves")
+    out = GridSolution(pressure=p, penetration=delta, converged=converged, residual=res,
+                       iterations=iterations, applications=applications,
+                       solver="cohesive " + (sol.solver if sol is not None else "grid"),
+                       message=message)
+    return CohesiveSolution(solution=out, contact=contact, weights=w, gap=g, sets=k)
