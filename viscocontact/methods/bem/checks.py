@@ -115,21 +115,22 @@ class Checks:
         return {"x": x, "pressure": pres, "displacement": u, "gap": np.where(within, 0.0, u - w)}
 
 
-def tensile_split(fields, widen: bool = False):
-    """Split contacts that carry tension inside (an adhesionless solid cannot): the new edges,
-    for each contact split its index and the middle of its tensile stretch, and the largest
-    tension as a fraction of the largest pressure (``None, [], 0.0`` without tension).
+def tensile_split(fields, widen: bool = False, strength: float = 0.0):
+    """Split contacts that carry more tension inside than the interface holds (an adhesionless
+    solid none, a finite-range law its cohesive stress ``strength``): the new edges, for each
+    contact split its index and the middle of its overloaded stretch, and the largest tension
+    beyond ``strength`` as a fraction of the largest stress (``None, [], 0.0`` without).
 
-    The new inner edges are the ends of the tensile stretch; ``widen`` moves each out by half
-    the stretch's width (at most halfway to the contact's edges), for a split whose parts
-    merged again."""
+    The new inner edges are the ends of the stretch; ``widen`` moves each out by half the
+    stretch's width (at most halfway to the contact's edges), for a split whose parts merged
+    again."""
     mesh = fields.mesh
     sig = fields.sigma
     scale = np.max(np.abs(sig)) if sig.size else 0.0
     out, where, tension = [], [], 0.0
     for j in range(mesh.n_contacts):
         sl = mesh.slice(j)
-        s = sig[sl]
+        s = sig[sl] - strength
         inner = np.zeros(s.shape, bool)
         inner[3:-3] = s[3:-3] > 1e-6 * scale
         if inner.any():

@@ -1,4 +1,4 @@
-r"""Uniform-grid spectral method for adhesionless scenes: :class:`Spectral`.
+r"""Uniform-grid spectral method for adhesionless scenes and cohesive laws: :class:`Spectral`.
 
 A :class:`~viscocontact.methods.base.SolutionMethod` for the scenes of
 :class:`~viscocontact.problem.ContactProblem` without adhesion (a uniform grid has no edge energy
@@ -83,7 +83,18 @@ the FFT products, 15 % in the rest of GMRES, 20 % in :meth:`ContactProblem.prepa
 memory tables the BEM needs and this method does not) and 9 % in the eigenvalues of the grids
 (cached by :class:`SpectralPrepared` along a sweep).
 
-Limits: adhesive scenes (use the BEM); contacts narrower than two cells get their cells as
+Cohesive law (:mod:`~viscocontact.methods.spectral.cohesive`): a finite-range adhesion model
+with a grid form (:meth:`AdhesionModel.cohesive_law`; :class:`~viscocontact.adhesion.MaugisDugdale`)
+is applied cell by cell, a uniform tension σ̃0 wherever the gap is below the range, its tips
+between cells; no edge condition, and cohesive runs without contact are allowed. The grid must
+resolve the zones (:data:`~viscocontact.methods.spectral.cohesive.CELLS_PER_ZONE` cells per
+quasi-static zone on the first trusted grid), so this is the low-Tabor side: the cross-check of
+the BEM's cohesive zones where they are wide (``docs/cohesive.md``, "The spectral
+cross-check"). It starts from the adhesionless contact, not along a loading path, so a scene
+with several equilibria may end on another one than the BEM's; :class:`~viscocontact.methods.
+auto.Auto` keeps adhesive scenes on the BEM.
+
+Limits: adhesive scenes without a cohesive law, short-range laws (use the BEM); contacts narrower than two cells get their cells as
 their extent (the estimate sees them and refines); the active set may fail on very
 non-symmetric operators (an SLS with β >= 50 at ζ of order one;
 :mod:`~viscocontact.methods.spectral.solvers`), and the

@@ -202,10 +202,10 @@ def _secant(position, residual, before, slope_hint):
 
 
 def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, penetration=None,
-                   start=None, start_penetration=None, tolerance: float = 1e-10,
-                   krylov_tolerance: float = 1e-10, max_updates: int = 100,
-                   max_iterations: int = 20000, max_sets: int = MAX_SETS,
-                   workers: int = 1) -> CohesiveSolution:
+                   start=None, start_penetration=None, start_contact=None,
+                   tolerance: float = 1e-10, krylov_tolerance: float = 1e-10,
+                   max_updates: int = 100, max_iterations: int = 20000,
+                   max_sets: int = MAX_SETS, workers: int = 1) -> CohesiveSolution:
     """The equilibrium of the cohesive law on one grid (module docstring).
 
     Unknowns are the tips of the runs of cells in range (:func:`tip_positions`), continuous,
@@ -227,18 +227,34 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
     start : ndarray
         Starting cell pressure ``p`` (tension negative), e.g. the adhesionless solution or the
         previous grid's carried over.
-    start_penetration : float
-        ``Δ̃`` of ``start`` (load control).
+    start_penetration : float, optional
+        ``Δ̃`` of ``start`` (load control; default: from the displacement of ``start`` on its
+        loaded cells).
+    start_contact : ndarray of bool, optional
+        A contact set to start from (a warm start: another method's contacts) instead of the
+        cells in range under ``start``: the first solve puts the cohesive stress on these
+        cells only, and the zones grow from them.
     """
     lam = circulant.eigenvalues
     r = np.asarray(heights, dtype=float)
     n = r.size
     load = mean_pressure is not None
-    delta = float(penetration) if not load else float(start_penetration)
     p = np.asarray(start, dtype=float).copy()
-    g = convolve(p, lam, workers) - (r - 1.0 + delta)
-    contact = p > 0.0
-    extents = tip_positions(g, contact, law)
+    u = convolve(p, lam, workers)
+    if not load:
+        delta = float(penetration)
+    elif start_penetration is None:
+        delta = 1.0 + float(np.mean((u - r)[p > 0])) if np.any(p > 0) else 0.0
+    else:
+        delta = float(start_penetration)
+    g = u - (r - 1.0 + delta)
+    if start_contact is None:
+        contact = p > 0.0
+        extents = tip_positions(g, contact, law)
+    else:
+        contact = np.asarray(start_contact, bool)
+        extents = ([(-0.5, n - 0.5)] if contact.all() else
+                   [(first - 0.5, last + 0.5) for first, last in _runs(contact)])
     before = None                 # the previous solve's extents and tip residuals
     iterations = applications = 0
     sol = None

@@ -179,7 +179,8 @@ def first_points(wavelength: float | None, tolerance: float, max_points: int) ->
 
 @attrs.frozen(kw_only=True)
 class Spectral(SolutionMethod):
-    r"""Uniform-grid spectral method for adhesionless scenes (:mod:`viscocontact.methods.spectral`).
+    r"""Uniform-grid spectral method for adhesionless scenes and finite-range cohesive laws
+    (:mod:`viscocontact.methods.spectral`).
 
     Parameters
     ----------
@@ -458,7 +459,8 @@ class Spectral(SolutionMethod):
                 current = measure(grid, sol, op.eigenvalues, self.workers or 1)
             else:
                 solved = self._solve_cohesive(op, grid, load, pen, start, start_penetration,
-                                              law, first=previous is None)
+                                              law, first=previous is None,
+                                              warm=initial is not None)
                 sol = solved.solution
                 current = measure(grid, sol, op.eigenvalues, self.workers or 1, law=law,
                                   contact=solved.contact, weights=solved.weights)
@@ -529,12 +531,18 @@ class Spectral(SolutionMethod):
         return attrs.evolve(sol, iterations=sol.iterations + its,
                             applications=sol.applications + apps)
 
-    def _solve_cohesive(self, op, grid, load, pen, start, start_penetration, law, first):
-        """A cohesive grid solve (:func:`~.cohesive.cohesive_solve`); on the first grid it
-        starts from the adhesionless solution (load control; a warm start's set seeds it) or
-        from no load (penetration control)."""
+    def _solve_cohesive(self, op, grid, load, pen, start, start_penetration, law, first,
+                        warm=False):
+        """A cohesive grid solve (:func:`~.cohesive.cohesive_solve`). On the first grid it
+        starts from the adhesionless solution (load control) or from no load (penetration
+        control); with a warm start, from its contacts under the cohesive stress, whose zones
+        then grow (so that another method's equilibrium, a merged contact that adhesion holds,
+        is checked as it is)."""
         its = apps = 0
-        if first:
+        contact = None
+        if first and warm:
+            contact = start > 0
+        elif first:
             if load is not None:
                 bare = self._solve_grid(op, grid, load, None, start, None)
                 its, apps = bare.iterations, bare.applications
@@ -543,7 +551,7 @@ class Spectral(SolutionMethod):
                 start = np.zeros(grid.points)
         solved = cohesive_solve(op, grid.heights, law, mean_pressure=load, penetration=pen,
                                 start=start, start_penetration=start_penetration,
-                                tolerance=self.residual, krylov_tolerance=self.krylov_tolerance,
+                                start_contact=contact, tolerance=self.residual, krylov_tolerance=self.krylov_tolerance,
                                 max_updates=self.max_updates,
                                 max_iterations=self.max_iterations, workers=self.workers or 1)
         sol = solved.solution
