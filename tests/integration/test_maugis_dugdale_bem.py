@@ -306,3 +306,65 @@ def test_rough_points_whose_approach_branch_ended(zeta, p, area, n):
     r = prob.solve()
     _check_rough(r, prob)
     assert r.n_contacts == n and r.area == pytest.approx(area, rel=1e-4)
+
+
+# ---- a contact's tension inside is bounded by the cohesive stress ------------------------------
+def test_a_contact_splits_where_its_tension_exceeds_the_cohesive_stress():
+    """``tensile_split`` at a law's strength: a contact opens where its stress exceeds σ̃0 (an
+    adhesionless one where it exceeds 0), between the ends of that stretch, and not where the
+    tension stays below σ̃0."""
+    from types import SimpleNamespace
+
+    from viscocontact.contact.mesh import MeshSpec, build_mesh
+    from viscocontact.methods.bem.checks import tensile_split
+
+    mesh = build_mesh(np.array([-1.0, 1.0]), MeshSpec(elements=64))
+    x = mesh.mid
+    stretch = np.abs(x) < 0.2
+    sigma = np.where(stretch, 1.5, -np.cos(x))    # compressive, with a tension of 1.5 inside
+    fields = SimpleNamespace(mesh=mesh, sigma=sigma)
+    split, where, tension = tensile_split(fields, strength=1.0)
+    assert split is not None and len(split) == 4 and where[0][0] == 0 and stretch.sum() > 2
+    assert split[1] == pytest.approx(mesh.left[stretch][0])
+    assert split[2] == pytest.approx(mesh.right[stretch][-1])
+    assert tension == pytest.approx(0.5 / 1.5)      # beyond σ̃0, of the largest stress
+    assert tensile_split(fields, strength=1.6)[0] is None
+    assert tensile_split(SimpleNamespace(mesh=mesh, sigma=-np.cos(x)), strength=0.0)[0] is None
+
+
+def _rough_md_range(h0_nm: float):
+    """:func:`_rough_md` with zones of range ``h0_nm`` nanometres."""
+    from pathlib import Path
+
+    from viscocontact.scene import Scene
+
+    text = (Path(__file__).parents[2] / "examples/scenes/thesis_rough.toml").read_text()
+    text = text.replace('kind = "energy-balance"', 'kind = "maugis-dugdale"').replace(
+        "equilibrium_distance = 1e-9", f"cohesive_range = {h0_nm}e-9")
+    return ContactProblem.from_scene(Scene.from_toml(text))
+
+
+@pytest.mark.slow
+def test_a_rough_merged_contact_never_passes_with_tension_beyond_the_cohesive_stress():
+    """The thesis rough profile with 100 nm zones (seed 0, p̃∞ = 0.3, ζ = 1): the approach merged
+    three contacts across two valleys into one that carried 19.6 inside against σ̃0 = 0.77, and
+    the BEM reported it converged. It now splits the contact there; the opened neck's zones then
+    meet, which the BEM does not model, and the solve says so. The spectral method's cohesive
+    grid finds an equilibrium with five contacts, each within the law."""
+    import attrs
+
+    from viscocontact.methods.spectral import Spectral
+
+    prob = attrs.evolve(_rough_md_range(100.0), zeta=1.0, mean_pressure=0.3)
+    strength = prob.adhesion.strength(prob.prepare().shape.amplitude)
+    r = prob.solve(fields=True)
+    if r.converged:
+        inside = r.fields["gap"] == 0.0
+        assert np.max(-r.fields["pressure"][inside]) <= strength * (1 + 1e-6)
+    else:
+        assert "split where its tension exceeded the cohesive stress" in " ".join(
+            r.extras["events"])
+        assert "zones of neighbouring contacts" in r.message
+    grid = Spectral().solve(prob)
+    assert grid.converged and grid.n_contacts == 5 and grid.residual <= 1e-8
+    assert grid.area == pytest.approx(0.26386, rel=1e-3)

@@ -29,6 +29,8 @@ cells (:func:`zone_cells`).
 """
 from __future__ import annotations
 
+from typing import Any
+
 import attrs
 import numpy as np
 
@@ -255,7 +257,7 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         contact = np.asarray(start_contact, bool)
         extents = ([(-0.5, n - 0.5)] if contact.all() else
                    [(first - 0.5, last + 0.5) for first, last in _runs(contact)])
-    before = None                 # the previous solve's extents and tip residuals
+    before: list | None = None    # the previous solve's extents and tip residuals
     iterations = applications = 0
     sol = None
     converged = False
@@ -267,7 +269,7 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         q0 = np.maximum(p + law.strength * w, 0.0)
         if not q0.any():
             q0[int(np.argmax(shifted))] = 1.0
-        common = dict(tolerance=tolerance, workers=workers, start=q0)
+        common: dict[str, Any] = dict(tolerance=tolerance, workers=workers, start=q0)
         if load:
             common["mean_pressure"] = float(mean_pressure) + law.strength * float(w.mean())
         else:

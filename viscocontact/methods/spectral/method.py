@@ -319,7 +319,8 @@ class Spectral(SolutionMethod):
                   "friction_dissipation": np.nan, "seconds": 0.0, "events": events}
         common = dict(iterations=0, function_evaluations=0, zeta=float(problem.zeta),
                       edge_perturbation=0.0, extras=extras)
-        # with a cohesive law the peak attracts the solid from a gap below the range on
+        # a cohesive law acts from a gap below its range on: a penetration down to -η can
+        # hold the solid by tension alone
         reach = 0.0 if law is None else -law.opening
         if (load is not None and not load > 0) or (pen is not None and not pen > reach):
             extras["seconds"] = time.perf_counter() - started
@@ -551,7 +552,8 @@ class Spectral(SolutionMethod):
                 start = np.zeros(grid.points)
         solved = cohesive_solve(op, grid.heights, law, mean_pressure=load, penetration=pen,
                                 start=start, start_penetration=start_penetration,
-                                start_contact=contact, tolerance=self.residual, krylov_tolerance=self.krylov_tolerance,
+                                start_contact=contact, tolerance=self.residual,
+                                krylov_tolerance=self.krylov_tolerance,
                                 max_updates=self.max_updates,
                                 max_iterations=self.max_iterations, workers=self.workers or 1)
         sol = solved.solution
@@ -576,7 +578,7 @@ class Spectral(SolutionMethod):
         loaded = current.in_contact
         pm = float(p.mean())
         if law is not None:
-            w = current.weights
+            w = current.weights if current.weights is not None else np.zeros(grid.points)
             alone = sum(1 for f, n in runs(w > 0)
                         if not loaded[(f + np.arange(n)) % grid.points].any())
             extras["cohesive"] = {
