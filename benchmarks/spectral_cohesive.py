@@ -67,7 +67,8 @@ def main(argv=None) -> None:
                 continue
             ratios.append(tg / tb)
             print(f"{zeta:6.0e} {load:5.2f} {tg:7.3f} {tb:7.3f} {tg / tb:6.2f} "
-                  f"{g.area / b.area - 1:+9.1e} {(g.friction - b.friction) / abs(b.friction):+9.1e} "
+                  f"{g.area / b.area - 1:+9.1e} "
+                  f"{(g.friction - b.friction) / abs(b.friction):+9.1e} "
                   f"{g.penetration / b.penetration - 1:+9.1e} {g.extras['points']:6d} "
                   f"{g.extras['error_estimate']:8.1e} "
                   f"{g.friction / g.extras['friction_dissipation'] - 1:+10.1e}")

@@ -5,9 +5,9 @@ approach path and no edge energy balance: a uniform-grid spectral solve finds it
 stated tolerance. An adhesive scene needs the energy balance at every edge, which only the BEM
 has (the spectral method applies a finite-range cohesive law on its grid, but from the
 adhesionless contact, not along the loading path, so it serves as a cross-check and is asked
-for by name). When the spectral method cannot reach the requested tolerance on the largest grid it
-allows, the BEM finishes the job seeded with the grid's contact set; when the grid solve does not
-converge at all (a very stiff solid at ζ ~ 1, whose trailing-edge layer the grid does not
+for by name). When the spectral method cannot reach the requested tolerance on the largest grid
+it allows, the BEM finishes the job seeded with the grid's contact set; when the grid solve does
+not converge at all (a very stiff solid at ζ ~ 1, whose trailing-edge layer the grid does not
 resolve), the BEM solves the scene from the caller's start.
 """
 from __future__ import annotations

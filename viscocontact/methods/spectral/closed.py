@@ -63,11 +63,10 @@ class ClosedContact:
         """``p̃∞`` of the closed contact at ``Δ̃`` (NaN when ``c0 = 0``)."""
         return closure.load_at(penetration, self.mean_height, self.mean_compliance)
 
-    def closes(self, mean_pressure=None, penetration=None, strength: float = 0.0) -> bool:
-        """Whether the solution at this load or penetration is the closed contact: it carries
-        no tension beyond ``strength`` (0: the adhesionless answer; a cohesive law's σ̃0)."""
-        return closure.closes(self.closing_load - strength, self.mean_height,
-                              self.mean_compliance, mean_pressure, penetration)
+    def closes(self, mean_pressure=None, penetration=None) -> bool:
+        """Whether the adhesionless solution at this load or penetration is the closed contact."""
+        return closure.closes(self.closing_load, self.mean_height, self.mean_compliance,
+                              mean_pressure, penetration)
 
     def result(self, m2: float, common: dict, mean_pressure=None, penetration=None,
                fields: bool = False, message: str = "contact closed over the period",

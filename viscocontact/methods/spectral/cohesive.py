@@ -3,7 +3,8 @@ r"""A Dugdale cohesive law on the uniform grid: the spectral method's finite-ran
 The law of :class:`~viscocontact.adhesion.MaugisDugdale` cell by cell: a uniform tensile stress
 σ̃0 wherever the gap lies in ``[0, η)`` (``η = h̃0/Λ̃``, the range in units of the amplitude),
 nothing where it is ``η`` or more. With the pressure ``p`` (compressive positive, as in
-:mod:`~viscocontact.methods.spectral.solvers`) and the gap ``g = A p - (r̃ - 1 + Δ̃)``, every cell is
+:mod:`~viscocontact.methods.spectral.solvers`) and the gap ``g = A p - (r̃ - 1 + Δ̃)``, every
+cell is
 
 * in contact: ``g = 0`` and ``p >= -σ̃0``;
 * cohesive: ``p = -σ̃0`` and ``0 <= g < η``;
@@ -11,15 +12,14 @@ nothing where it is ``η`` or more. With the pressure ``p`` (compressive positiv
 
 No edge condition is imposed: the stress at a contact edge comes out bounded (the
 Maugis–Dugdale condition) because the cells carry at most σ̃0 of tension, and a cohesive run
-needs no contact beside it (tension without contact). Where the law acts (the *ranged* cells
-``W``, contact and cohesive) the shifted pressure ``q = p + σ̃0`` obeys the adhesionless
-conditions ``q >= 0``, ``g >= 0``, ``q g = 0``, with the heights raised by the displacement of the
-cohesive stress, ``r̃ + σ̃0 A 1_W``, and in load control the load raised by ``σ̃0 |W|/N``. So for a
-given ``W`` one adhesionless grid solve (Polonsky-Keer or the active set) gives the equilibrium,
-and ``W`` is found by a fixed point: ``W ← {q > 0} ∪ {g < η}`` until it repeats
-(:func:`cohesive_solve`). When a set comes back that is not the last one (the outer iteration
-cycles), the union of the sets of the cycle is taken once; a second cycle is reported as not
-converged.
+needs no contact beside it (tension without contact). With ``w`` the share of each cell under
+the cohesive stress (1 in contact and in the zones; between 0 and 1 in the cell that holds a
+zone's tip), the shifted pressure ``q = p + σ̃0 w`` obeys the adhesionless conditions
+``q >= 0``, ``g >= 0``, ``q g = 0``, with the heights raised by the displacement of the cohesive
+stress, ``r̃ + σ̃0 A w``, and in load control the load raised by ``σ̃0 mean(w)``. So for given
+tips one adhesionless grid solve (Polonsky-Keer or the active set) gives the equilibrium, and
+the tips are found by iterating on the gaps, each tip ``g = η`` placed between two cell centres
+(:func:`tip_positions`, :func:`tip_weights`, :func:`cohesive_solve`).
 
 The law is non-convex (the traction jumps at ``g = η``), so a scene can have several equilibria
 (the JKR-like branches); this iteration starts from the adhesionless solution, or from the
@@ -165,7 +165,7 @@ class CohesiveSolution:
     gap : ndarray
         ``g`` at the cell centres.
     sets : int
-        Inner solves (ranged sets and tip positions tried).
+        Inner solves (tip positions tried).
     """
 
     solution: GridSolution
