@@ -161,3 +161,16 @@ def test_load_control_needs_a_compressive_load_and_energy_balance_stays_unsuppor
 def test_auto_sends_a_cohesive_scene_to_the_bem():
     method, reason = Auto().choose(_scene(mean_pressure=0.2))
     assert method.name == "bem" and "path" in reason
+
+
+def test_a_warm_start_from_the_contacts_reaches_the_same_equilibrium():
+    """A warm start seeds the first grid with its contacts under the cohesive stress (a study's
+    continuation, or another method's answer checked as it is): on a scene with one equilibrium
+    the answer is the cold one, on the same grids."""
+    scene = _scene(rheology=StandardLinearSolid(beta=10.0), zeta=1.0, mean_pressure=0.2)
+    cold = Spectral().solve(scene)
+    warm = Spectral().solve(scene, initial=scene.solve())
+    assert warm.converged and warm.extras["points"] == cold.extras["points"]
+    assert warm.area == pytest.approx(cold.area, rel=1e-9)
+    assert warm.friction == pytest.approx(cold.friction, rel=1e-8)
+    assert any(e.startswith("warm start") for e in warm.extras["events"])
