@@ -32,6 +32,13 @@ class InverseJacobian:
     """
 
     def __init__(self, J: np.ndarray):
+        J = np.asarray(J, dtype=float)
+        if not np.all(np.isfinite(J)):
+            # a differenced column crossed into points where the residual is undefined: the
+            # steps are NaN, which the solver reports as a failed step (as Newton's
+            # linear_solve does); the pseudo-inverse's SVD would raise instead
+            self.H = np.full(J.shape, np.nan)
+            return
         try:
             self.H = np.linalg.inv(J) if np.linalg.cond(J) < 1e14 else np.linalg.pinv(J)
         except np.linalg.LinAlgError:
@@ -150,8 +157,14 @@ class Broyden(FiniteDifferenceOptions, NonlinearSolver):
                         H = InverseJacobian(problem_jacobian(problem, fun, x, r, fd)[0])
                         fresh, grew, restarts = True, 0, restarts + 1
                         continue
-                    status = Status.STALLED if np.all(np.isfinite(s)) else Status.FAILED
-                    message = f"step {max_abs(s):.3g} <= tolerances.step with a fresh Jacobian"
+                    if np.all(np.isfinite(s)):
+                        status = Status.STALLED
+                        message = f"step {max_abs(s):.3g} <= tolerances.step with a fresh Jacobian"
+                    else:
+                        status = Status.FAILED
+                        message = ("no finite step: the Jacobian is not finite (a difference "
+                                   "crossed into points where the residual is undefined)"
+                                   if not np.all(np.isfinite(H.H)) else "no finite step")
                     break
                 xt = x + s
                 rt = fun(xt)

@@ -546,3 +546,20 @@ def test_cg_restarts_when_the_conjugate_step_is_negligible():
                         scale=[1.0, 1.0], coupling=np.zeros((2, 2)))
     res = NonlinearCG().solve(system.as_problem(), [-2.050642650640125, 0.278273798489942], TOL)
     assert res.converged and res.iterations <= 6
+
+
+@pytest.mark.parametrize("cls", [Broyden, Newton])
+def test_a_jacobian_that_is_not_finite_ends_the_solve_as_failed(cls):
+    """A differenced Jacobian whose column crossed into points where the residual is undefined
+    (a model's limitation there) is not finite: the solve ends as failed and says why, instead
+    of raising from the inverse's SVD (Broyden did: ``LinAlgError: SVD did not converge``)."""
+    class Problem:
+        def residual(self, x):
+            return np.array([x[0] ** 2 - 2.0, x[1] - 1.0])
+
+        def jacobian(self, x):
+            return np.array([[np.inf, 0.0], [0.0, 1.0]])
+
+    r = cls().solve(Problem(), np.array([1.0, 0.0]))
+    assert not r.converged and r.status is Status.FAILED
+    assert "finite" in r.message
