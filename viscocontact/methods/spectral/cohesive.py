@@ -34,6 +34,7 @@ from typing import Any
 import attrs
 import numpy as np
 
+from .edges import runs
 from .operator import convolve, invert
 from .solvers import GridSolution, active_set, polonsky_keer, violation
 
@@ -42,9 +43,6 @@ PRESOLVE = 1e-6
 
 #: Most inner solves per grid.
 MAX_SETS = 60
-#: Largest change of a tip share (a fraction of a cell) at which the tips have settled: the load
-#: then moves by less than ``σ̃0 h`` times this per tip.
-TIP_TOLERANCE = 1e-9
 #: Fewest cells per quasi-static Dugdale zone ``h̃0²/(4γ̃)`` on the first trusted grid (a
 #: viscoelastic zone lies within ``[a0/2, βa0]``).
 CELLS_PER_ZONE = 32.0
@@ -83,8 +81,6 @@ def ranged_heights(heights, weights, law: GridLaw, eigenvalues, workers: int = 1
 
 def _runs(inside: np.ndarray) -> list[tuple[int, int]]:
     """``(first, last)`` of each cyclic run of True cells, ``last >= first`` (unwrapped)."""
-    from .edges import runs
-
     return [(f, f + n - 1) for f, n in runs(inside)]
 
 
@@ -118,8 +114,8 @@ def tip_positions(gap, contact, law: GridLaw) -> list[tuple[float, float]]:
 
 def tip_weights(extents, points: int) -> np.ndarray:
     """The share of each cell under the cohesive stress for runs of extents ``[L, R]``
-    (:func:`tip_positions`): the cells within a run wholly, the two cells at each tip in
-    proportion (a tip quantised to whole cells moves the load by up to ``σ̃0 h`` per tip, a
+    (:func:`tip_positions`): the cells within a run wholly, the cell that holds a tip in
+    proportion to its part inside (a tip quantised to whole cells moves the load by up to ``σ̃0 h`` per tip, a
     first-order error that, on a slow solid, drowns its small friction)."""
     w = np.zeros(points)
     for lo, hi in extents:
@@ -211,7 +207,7 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
     """The equilibrium of the cohesive law on one grid (module docstring).
 
     Unknowns are the tips of the runs of cells in range (:func:`tip_positions`), continuous,
-    with the cells at each tip sharing the stress in proportion (:func:`tip_weights`). Each
+    the cell that holds a tip carrying the stress in proportion (:func:`tip_weights`). Each
     inner solve takes them as given; a tip's residual is the gap there less η. The first step
     and any step after the runs changed places every tip where the last solution's gap crosses
     η (a fixed point, which on its own creeps: the new stress pulls the next cell into range,
