@@ -54,9 +54,14 @@ class ClosedContact:
         _, rh, _, _ = self.stress
         return closure.load_at(penetration, rh[0].real, self.prep.kernel.mean)
 
+    @property
+    def closing_load(self) -> float:
+        """The least ``p̃∞`` that full contact carries without tension (``max σ̃_osc``)."""
+        return float(np.max(self.stress[3]))
+
     def largest_tension(self, mean_pressure: float) -> float:
         """The largest tensile stress of full contact at ``mean_pressure``."""
-        return float(np.max(self.stress[3])) - mean_pressure
+        return self.closing_load - mean_pressure
 
     def supports(self, mean_pressure: float) -> bool:
         """Whether full contact carries ``mean_pressure`` with no tension above the interface's
@@ -68,8 +73,8 @@ class ClosedContact:
     def closes(self, control: Control) -> bool:
         """Whether the adhesionless equilibrium under ``control`` is the closed contact
         (:func:`~viscocontact.contact.closure.closes`)."""
-        _, rh, _, stress = self.stress
-        return closure.closes(float(np.max(stress)), rh[0].real, self.prep.kernel.mean,
+        _, rh, _, _ = self.stress
+        return closure.closes(self.closing_load, rh[0].real, self.prep.kernel.mean,
                               **control.fields_kwargs())
 
     def holds(self, control: Control) -> bool:
@@ -111,7 +116,7 @@ class ClosedContact:
                 # without adhesion the closed contact at its one penetration carries any load
                 # from the closing load up; the partial contacts close at that load as the
                 # penetration reaches it (Westergaard's p̃∞ = 1 at Δ̃ = 1), so that is the answer
-                pm = float(np.max(self.stress[3]))
+                pm = self.closing_load
                 message += closure.AT_CLOSING_PENETRATION
             else:
                 pm = closure.load_at(pen, rh[0].real, c0)

@@ -35,11 +35,8 @@ import attrs
 import numpy as np
 
 from .edges import runs
-from .operator import convolve, invert
-from .solvers import GridSolution, active_set, polonsky_keer, violation
-
-#: Tolerance of the Polonsky-Keer start of an active-set solve (as the method's first grid).
-PRESOLVE = 1e-6
+from .operator import convolve
+from .solvers import GridSolution, grid_solve, violation
 
 #: Most inner solves per grid.
 MAX_SETS = 60
@@ -255,9 +252,8 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
                    [(first - 0.5, last + 0.5) for first, last in _runs(contact)])
     before: list | None = None    # the previous solve's extents and tip residuals
     iterations = applications = 0
-    sol = None
+    sol: GridSolution | None = None
     converged = False
-    w = tip_weights(extents, n)
     message = f"the cohesive tips did not settle in {max_sets} solves"
     for k in range(1, max_sets + 1):
         w = tip_weights(extents, n)
@@ -265,36 +261,26 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         q0 = np.maximum(p + law.strength * w, 0.0)
         if not q0.any():
             q0[int(np.argmax(shifted))] = 1.0
-        common: dict[str, Any] = dict(tolerance=tolerance, workers=workers, start=q0)
-        if load:
-            common["mean_pressure"] = float(mean_pressure) + law.strength * float(w.mean())
+        control: dict[str, Any] = (
+            {"mean_pressure": float(mean_pressure) + law.strength * float(w.mean())} if load
+            else {"penetration": float(penetration)})
+        options = dict(start=q0, tolerance=tolerance, krylov_tolerance=krylov_tolerance,
+                       max_updates=max_updates, max_iterations=max_iterations, workers=workers,
+                       **control)
+        counts = []
+        if k > 1 or circulant.symmetric:      # from the last solution: the tips moved a little
+            tried = grid_solve(circulant, shifted, start_penetration=delta if load else None,
+                               **options)
+            counts.append(tried)
+        if counts and (tried.converged or circulant.symmetric):
+            sol = tried
         else:
-            common["penetration"] = float(penetration)
-        if circulant.symmetric:
-            sol = polonsky_keer(lam, shifted, max_iterations=max_iterations,
-                                preconditioner=circulant.inverse, **common)
-            counts = [sol]
-        else:
-            counts = []
-            sol = None
-            if k > 1:                 # from the last solution: the tips moved a little
-                sol = active_set(circulant, shifted, start_penetration=delta if load else None,
-                                 krylov_tolerance=krylov_tolerance, max_iterations=max_updates,
-                                 **common)
-                counts.append(sol)
-            if sol is None or not sol.converged:
-                # a start far from the solution (the adhesionless contact, a coarser grid's
-                # carried over): the active set then needs damped steps by the dozen (on a
-                # sinusoid at ζ = 1e-2 it failed in 100), so its start is the solution for
-                # the operator's symmetric part, as on the spectral method's first grid
-                sym = circulant.symmetric_part()
-                first = polonsky_keer(sym, shifted, max_iterations=max_iterations,
-                                      preconditioner=invert(sym),
-                                      **dict(common, tolerance=PRESOLVE))
-                sol = active_set(circulant, shifted, start_penetration=first.penetration
-                                 if load else None, krylov_tolerance=krylov_tolerance,
-                                 max_iterations=max_updates, **dict(common, start=first.pressure))
-                counts += [first, sol]
+            # a start far from the solution (the adhesionless contact, a coarser grid's carried
+            # over): the active set then needs damped steps by the dozen (on a sinusoid at
+            # ζ = 1e-2 it failed in 100), so it starts from the solution for the operator's
+            # symmetric part, as on the spectral method's first grid
+            sol = grid_solve(circulant, shifted, presolve=True, **options)
+            counts.append(sol)
         iterations += sum(c.iterations for c in counts)
         applications += sum(c.applications for c in counts)
         q, delta = sol.pressure, float(sol.penetration)

@@ -25,8 +25,8 @@ from .closed import ClosedContact, no_contact_result
 from .cohesive import CELLS_PER_ZONE, GridLaw, cohesive_solve, law_violation, zone_cells
 from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
-from .operator import OperatorCache, convolve, invert, power
-from .solvers import GridSolution, active_set, polonsky_keer, violation
+from .operator import OperatorCache, convolve, power
+from .solvers import GridSolution, grid_solve, violation
 
 #: Fewest cells ``points`` may ask for.
 MIN_POINTS = 64
@@ -47,8 +47,6 @@ FIRST_POINTS = 256
 ORDER = 1.0
 #: Expected convergence order of Ã, which sizes the first grid for a tolerance.
 ORDER_AREA = 2.0
-#: Tolerance of the Polonsky-Keer start of the active-set method on the first grid.
-PRESOLVE = 1e-6
 
 
 @attrs.frozen(kw_only=True, eq=False)
@@ -84,18 +82,14 @@ class GridMeasures:
     edges: np.ndarray
     area: float
     friction: float
-    #: cells in contact (None: the loaded ones, ``p > 0``; a cohesive law's contact cells)
-    contact: np.ndarray | None = None
+    #: cells in contact (the loaded ones, ``p > 0``; a cohesive law's contact cells)
+    contact: np.ndarray
     #: share of each cell under a cohesive law's stress (None: no law)
     weights: np.ndarray | None = None
 
     @property
-    def in_contact(self) -> np.ndarray:
-        return self.solution.pressure > 0 if self.contact is None else self.contact
-
-    @property
     def closed(self) -> bool:
-        return bool(np.all(self.in_contact))
+        return bool(np.all(self.contact))
 
 
 def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int = 1,
@@ -111,10 +105,10 @@ def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int
     pm = float(p.mean())
     if law is None:
         contact = p > 0
-        mu = float(-(p @ grid.rise) / (TWO_PI * pm)) if pm > 0 else float("nan")
-    else:
-        mu = float(-(p @ grid.rise) / (TWO_PI * pm)) if pm != 0 else float("nan")
-    extra = dict(contact=None if law is None else contact, weights=weights)
+    # a cohesive law's load may be tensile
+    defined = pm > 0 if law is None else pm != 0
+    mu = float(-(p @ grid.rise) / (TWO_PI * pm)) if defined else float("nan")
+    extra = dict(contact=contact, weights=weights)
     if np.all(contact):
         return GridMeasures(grid=grid, solution=solution, edges=np.zeros((0, 2)), area=TWO_PI,
                             friction=mu, **extra)
@@ -267,12 +261,15 @@ class Spectral(SolutionMethod):
         return None
 
     @staticmethod
-    def law(problem) -> GridLaw | None:
+    def law(problem, amplitude: float | None = None) -> GridLaw | None:
         """The scene's cohesive law on the grid (:meth:`AdhesionModel.cohesive_law`), None
-        without one."""
+        without one; ``amplitude``: Λ̃ when the caller has it prepared (else from the
+        profile's peak)."""
         if not float(problem.adhesion.work_of_adhesion) > 0:
             return None
-        law = problem.adhesion.cohesive_law(float(problem.profile.peak()[1]))
+        if amplitude is None:
+            amplitude = float(problem.profile.peak()[1])
+        law = problem.adhesion.cohesive_law(amplitude)
         return None if law is None else GridLaw(strength=float(law[0]), opening=float(law[1]),
                                                 zone=float(law[2]))
 
@@ -312,7 +309,7 @@ class Spectral(SolutionMethod):
             raise ValidationError("ContactProblem.adhesion", problem.adhesion,
                                   f"a scene the spectral method solves ({why})")
         prep = self._prepared(problem, prepared)
-        law = self.law(problem)
+        law = self.law(problem, prep.shape.amplitude)
         load, pen = problem.mean_pressure, problem.penetration
         events: list[str] = []
         extras = {"method": self.name, "error_estimate": 0.0, "points": 0, "tolerance_met": True,
@@ -344,7 +341,7 @@ class Spectral(SolutionMethod):
         if why is not None:
             return (PlanStep(stage="method", choice="spectral: not applicable", reason=why),)
         prep = self._prepared(problem, prepared)
-        law = self.law(problem)
+        law = self.law(problem, prep.shape.amplitude)
         wavelength = prep.shape.wavelength
         if self.points is not None:
             grid = PlanStep(stage="grid", choice=f"{self.points} cells, estimate from "
@@ -511,26 +508,16 @@ class Spectral(SolutionMethod):
         return start
 
     def _solve_grid(self, op, grid, load, pen, start, start_penetration) -> GridSolution:
-        workers = self.workers or 1
-        common = dict(mean_pressure=load, penetration=pen, tolerance=self.residual,
-                      workers=workers)
-        if op.symmetric:
-            return polonsky_keer(op.eigenvalues, grid.heights, start=start,
-                                 max_iterations=self.max_iterations, preconditioner=op.inverse,
-                                 **common)
-        its = apps = 0
-        if start is None:           # first grid: the solution for the symmetric part to start
-            sym = op.symmetric_part()
-            first = polonsky_keer(sym, grid.heights, max_iterations=self.max_iterations,
-                                  preconditioner=invert(sym),
-                                  **dict(common, tolerance=PRESOLVE))
-            start, start_penetration = first.pressure, first.penetration
-            its, apps = first.iterations, first.applications
-        sol = active_set(op, grid.heights, start=start, start_penetration=start_penetration,
-                         krylov_tolerance=self.krylov_tolerance, max_iterations=self.max_updates,
-                         **common)
-        return attrs.evolve(sol, iterations=sol.iterations + its,
-                            applications=sol.applications + apps)
+        # the first grid starts from the solution for the operator's symmetric part
+        return grid_solve(op, grid.heights, mean_pressure=load, penetration=pen, start=start,
+                          start_penetration=start_penetration, presolve=start is None,
+                          **self._grid_options())
+
+    def _grid_options(self) -> dict:
+        """The options of every grid solve (:func:`~.solvers.grid_solve`)."""
+        return dict(tolerance=self.residual, krylov_tolerance=self.krylov_tolerance,
+                    max_updates=self.max_updates, max_iterations=self.max_iterations,
+                    workers=self.workers or 1)
 
     def _solve_cohesive(self, op, grid, load, pen, start, start_penetration, law, first,
                         warm=False):
@@ -552,10 +539,7 @@ class Spectral(SolutionMethod):
                 start = np.zeros(grid.points)
         solved = cohesive_solve(op, grid.heights, law, mean_pressure=load, penetration=pen,
                                 start=start, start_penetration=start_penetration,
-                                start_contact=contact, tolerance=self.residual,
-                                krylov_tolerance=self.krylov_tolerance,
-                                max_updates=self.max_updates,
-                                max_iterations=self.max_iterations, workers=self.workers or 1)
+                                start_contact=contact, **self._grid_options())
         sol = solved.solution
         return attrs.evolve(solved, solution=attrs.evolve(
             sol, iterations=sol.iterations + its, applications=sol.applications + apps))
@@ -575,7 +559,7 @@ class Spectral(SolutionMethod):
         op = prep.operators.circulant(prep.kernel, grid.points)
         u = convolve(p, op.eigenvalues, workers)
         gap = u - (grid.heights - 1.0 + sol.penetration)
-        loaded = current.in_contact
+        loaded = current.contact
         pm = float(p.mean())
         if law is not None:
             w = current.weights if current.weights is not None else np.zeros(grid.points)

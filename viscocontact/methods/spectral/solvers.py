@@ -51,7 +51,7 @@ import numpy as np
 
 from ...deadline import check as check_deadline
 from .krylov import gmres
-from .operator import convolve
+from .operator import convolve, invert
 
 POLONSKY_KEER = "Polonsky-Keer"
 #: Relative tolerance of the Krylov solves of the active-set method while the set still changes.
@@ -60,6 +60,9 @@ LOOSE_KRYLOV = 1e-2
 #: before the line search is switched on (three to six settle a set from a nearby start).
 LINE_SEARCH_SMALLEST = 1.0 / 1024
 UNDAMPED_STEPS = 10
+#: Tolerance of the Polonsky-Keer solve for the operator's symmetric part that starts an active
+#: set from far (:func:`grid_solve`).
+PRESOLVE = 1e-6
 #: A search direction ``t`` with ``tᵀAt <= FLAT·|t|²·max|Λ|`` has no stiffness.
 FLAT = 1e-12
 ACTIVE_SET = "active set"
@@ -360,6 +363,36 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
                         iterations=max_iterations, applications=apps[0], solver=ACTIVE_SET,
                         message=f"no convergence in {max_iterations} active-set steps")
+
+
+def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
+               start_penetration: float | None = None, presolve: bool = False,
+               tolerance: float = 1e-10, krylov_tolerance: float = 1e-10,
+               max_updates: int = 100, max_iterations: int = 20000,
+               workers: int = 1) -> GridSolution:
+    """One grid's contact problem with the solver its operator needs: :func:`polonsky_keer` when
+    it is symmetric, else :func:`active_set`, started with ``presolve`` from the solution for the
+    operator's symmetric part (to :data:`PRESOLVE`, itself from ``start``): from a start far
+    from the solution (none, or another problem's) the active set needs damped steps by the
+    dozen. The counts add up over both solves."""
+    common = dict(mean_pressure=mean_pressure, penetration=penetration, tolerance=tolerance,
+                  workers=workers)
+    if circulant.symmetric:
+        return polonsky_keer(circulant.eigenvalues, heights, start=start,
+                             max_iterations=max_iterations, preconditioner=circulant.inverse,
+                             **common)
+    its = apps = 0
+    if presolve:
+        sym = circulant.symmetric_part()
+        first = polonsky_keer(sym, heights, start=start, max_iterations=max_iterations,
+                              preconditioner=invert(sym),
+                              **dict(common, tolerance=PRESOLVE))
+        start, start_penetration = first.pressure, first.penetration
+        its, apps = first.iterations, first.applications
+    sol = active_set(circulant, heights, start=start, start_penetration=start_penetration,
+                     krylov_tolerance=krylov_tolerance, max_iterations=max_updates, **common)
+    return attrs.evolve(sol, iterations=sol.iterations + its,
+                        applications=sol.applications + apps)
 
 
 def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
