@@ -1,7 +1,7 @@
 """Seconds, residual evaluations and iterations of one rough adhesive point, from first touch,
 next to a dense solve timed in the same run.
 
-    python benchmarks/adhesive_point.py [--seeds 11,12,13] [--crowded] [--profile FILE]
+    python benchmarks/adhesive_point.py [--seeds 11,12,13] [--crowded] [--profile FILE] [--threads N]
 
 The point (thesis §4.6 scene): ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=s)``,
 ``StandardLinearSolid(beta=10)``, ``EnergyBalance(gamma=2.387e-7)``, p̃∞ = 0.1, ζ = 1e-2, the
@@ -10,8 +10,10 @@ default mesh and the default solver of an adhesive scene (Broyden), from first t
 
 The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one BLAS thread
 (median of five), measured in the same run so that the ratio does not depend on the machine's
-load. Prints one line per seed and the median; ``--profile FILE`` writes the cProfile statistics
-of the first seed to FILE instead of timing the rest.
+load. The solves run BLAS on one thread too; their influence loop splits its rows between the
+threads of ``--threads`` (default ``VISCOCONTACT_THREADS`` or the cores:
+``viscocontact._threads``). Prints one line per seed and the median; ``--profile FILE`` writes
+the cProfile statistics of the first seed to FILE instead of timing the rest.
 
 Before the timed solves a small adhesive sinusoid is solved once and its time printed as the
 process's start: the package's imports, numba and its cached machine code (0.6-1 s), which a
@@ -81,14 +83,21 @@ def main(argv=None) -> None:
     ap.add_argument("--profile", default=None, help="write cProfile statistics of the first seed")
     ap.add_argument("--cold", action="store_true",
                     help="no warm-up solve: the first seed pays the process's start")
+    ap.add_argument("--threads", type=int, default=None,
+                    help="threads of the influence loop (default: VISCOCONTACT_THREADS or the "
+                         "cores; the dense solve always has one BLAS thread)")
     args = ap.parse_args(argv)
+    from viscocontact._threads import set_threads, threads
     from viscocontact.solvers import Broyden, Newton
+
+    set_threads(args.threads)
 
     solver = {"broyden": Broyden, "newton": Newton}[args.solver]()
     seeds = ([int(s) for s in args.seeds.split(",")] if args.seeds
              else ([0, 1, 2] if args.crowded else [11, 12, 13]))
     ref = dense_solve_seconds()
-    print(f"numpy 2000x2000 solve, one BLAS thread: {ref:.3f} s", flush=True)
+    print(f"numpy 2000x2000 solve, one BLAS thread: {ref:.3f} s; the solves' influence loop "
+          f"on {threads()} thread(s), BLAS on one", flush=True)
     if not args.cold:
         print(f"start of the process (a small adhesive sinusoid, untimed below): "
               f"{warm_up():.2f} s", flush=True)

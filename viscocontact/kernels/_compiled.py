@@ -113,5 +113,49 @@ def _integrals(points, ends, lo, hi, nodes, zero, first, u0, inverse_width, coef
                 out_e[row, q] = ve[lo[q]] - ve[hi[q]]
 
 
+@njit(cache=True, nogil=True)
+def _slopes(points, ends, nodes, zero, first, u0, inverse_width, dcoef, singular, out_f, out_e):
+    """``out[l, k] = V'(ξ_l - ends[k])`` for ``V = F̃`` into ``out_f`` (with the slope
+    ``singular·(log|x| + 1)`` of ``x log|x|``, infinite at 0) and ``V = E`` into ``out_e``
+    (either may have size 0). ``dcoef`` is ``(n, 7)``: per table interval the slope's quadratic
+    in the local coordinate for ``F̃`` (3) and ``E`` (3), and the inverse width."""
+    want_f = out_f.size > 0
+    want_e = out_e.size > 0
+    m = ends.size
+    for row in range(points.size):
+        xi = points[row]
+        j = 0
+        for k in range(m):
+            x = xi - ends[k]
+            if x >= _PI:
+                x -= _TWO_PI
+            elif x < -_PI:
+                x += _TWO_PI
+            if not (-_PI <= x < _PI):
+                if x != x:
+                    if want_f:
+                        out_f[row, k] = x
+                    if want_e:
+                        out_e[row, k] = x
+                    continue
+                x = np.mod(x + _PI, _TWO_PI) - _PI
+            lg = np.log(abs(x))
+            if not (nodes[j] <= x < nodes[j + 1]):
+                if j > 0 and nodes[j - 1] <= x < nodes[j]:
+                    j -= 1
+                else:
+                    j = _interval(x, lg, nodes, zero, first, u0, inverse_width)
+            t = (x - nodes[j]) * dcoef[j, 6]
+            if want_f:
+                v = dcoef[j, 0] + t * (dcoef[j, 1] + t * dcoef[j, 2])
+                if singular != 0.0:
+                    v += singular * (lg + 1.0)
+                out_f[row, k] = v
+            if want_e:
+                out_e[row, k] = dcoef[j, 3] + t * (dcoef[j, 4] + t * dcoef[j, 5])
+
+
 #: :func:`_integrals` as the callers see it (numba's dispatcher types its call as argument-free)
 integrals = cast(Callable[..., None], _integrals)
+#: :func:`_slopes` likewise
+slopes = cast(Callable[..., None], _slopes)

@@ -324,6 +324,7 @@ def _table_parts(antiderivative):
 
 _TABLE_PARTS = {PreparedKernel.antiderivative: "F", PreparedKernel.antiderivative_pair: "FE",
                 PreparedKernel.even_antiderivative: "E"}
+_TABLE_SLOPES: dict[object, str] = {PreparedKernel.antiderivative_slope: "F", PreparedKernel.slope_pair: "FE"}
 
 
 def element_integrals(antiderivative, points, left, right, block: int = BLOCK_SIZE) -> np.ndarray:
@@ -383,7 +384,13 @@ def element_integrals(antiderivative, points, left, right, block: int = BLOCK_SI
 def pairwise(function, points, ends, block: int = BLOCK_SIZE) -> np.ndarray:
     """``function(ξ_l - e_k)`` for every point and end (shape ``(k,) + (N, M)`` when
     ``function`` stacks ``k`` functions), evaluated on blocks of rows as in
-    :func:`element_integrals`."""
+    :func:`element_integrals`. The table-backed slopes of a :class:`PreparedKernel`
+    (:meth:`~PreparedKernel.antiderivative_slope`, :meth:`~PreparedKernel.slope_pair`) go to
+    the compiled loop (:meth:`KernelTable.pairwise_slopes`)."""
+    owner = getattr(function, "__self__", None)
+    parts = _TABLE_SLOPES.get(getattr(function, "__func__", None))
+    if isinstance(owner, PreparedKernel) and owner.table is not None and parts is not None:
+        return owner.table.pairwise_slopes(points, ends, parts)
     xi = np.asarray(points, dtype=float)
     ends = np.asarray(ends, dtype=float)
 

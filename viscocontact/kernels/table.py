@@ -98,6 +98,7 @@ class KernelTable:
         self._de = tuple(np.ascontiguousarray(k * c / widths) for k, c in zip((1, 2, 3), even[1:]))
         # the compiled loop's layout: one row of 9 per interval (a cache line and a word)
         self._coef = np.ascontiguousarray(np.column_stack(self._f + self._e + (1.0 / widths,)))
+        self._dcoef = np.ascontiguousarray(np.column_stack(self._df + self._de + (1.0 / widths,)))
         self._zero = int(np.searchsorted(nodes, 0.0))
         if not (nodes[self._zero] == 0.0 and np.array_equal(nodes[self._zero:][::-1],
                                                           -nodes[:self._zero + 1])):
@@ -161,8 +162,10 @@ class KernelTable:
         """``V(ξ_l - a_q) - V(ξ_l - b_q)`` for ``V`` = ``F̃`` (``parts="F"``), ``E`` (``"E"``) or
         both stacked (``"FE"``), by the compiled loop of :mod:`._compiled`: the same values as
         :func:`~viscocontact.kernels.prepared.element_integrals` with :meth:`antiderivative`,
-        :meth:`even` or :meth:`pair`, up to rounding."""
+        :meth:`even` or :meth:`pair`, up to rounding. Large calls split their rows between
+        threads (:mod:`viscocontact._threads`; the same values bit for bit)."""
         from . import _compiled
+        from .._threads import split_rows
 
         xi = np.ascontiguousarray(np.ravel(points), dtype=float)
         a = np.ravel(np.asarray(left, dtype=float))
@@ -173,8 +176,39 @@ class KernelTable:
         empty = np.empty((0, 0))
         out_f = out[parts.index("F")] if "F" in parts else empty
         out_e = out[parts.index("E")] if "E" in parts else empty
-        _compiled.integrals(xi, ends, where[:a.size], where[a.size:], self.nodes,
-                            self._zero, *self._buckets, self._coef, self.singular, out_f, out_e)
+        lo, hi = where[:a.size], where[a.size:]
+
+        def rows(start, stop):
+            _compiled.integrals(xi[start:stop], ends, lo, hi, self.nodes, self._zero,
+                                *self._buckets, self._coef, self.singular,
+                                out_f[start:stop] if out_f.size else empty,
+                                out_e[start:stop] if out_e.size else empty)
+
+        split_rows(rows, xi.size, xi.size * ends.size)
+        return out if len(parts) > 1 else out[0]
+
+    def pairwise_slopes(self, points, ends, parts: str = "F"):
+        """``V'(ξ_l - e_k)`` for every point and end, ``V`` = ``F̃`` (``parts="F"``, as
+        :meth:`slope`) or both ``F̃`` and ``E`` stacked (``"FE"``, as :meth:`slope_pair`), by the
+        compiled loop of :mod:`._compiled` (the same values up to rounding; large calls split
+        their rows between threads, bit for bit the same)."""
+        from . import _compiled
+        from .._threads import split_rows
+
+        xi = np.ascontiguousarray(np.ravel(points), dtype=float)
+        e = np.ascontiguousarray(np.ravel(ends), dtype=float)
+        out = np.empty((len(parts), xi.size, e.size))
+        empty = np.empty((0, 0))
+        out_f = out[parts.index("F")] if "F" in parts else empty
+        out_e = out[parts.index("E")] if "E" in parts else empty
+
+        def rows(start, stop):
+            _compiled.slopes(xi[start:stop], e, self.nodes, self._zero, *self._buckets,
+                             self._dcoef, self.singular,
+                             out_f[start:stop] if out_f.size else empty,
+                             out_e[start:stop] if out_e.size else empty)
+
+        split_rows(rows, xi.size, xi.size * e.size)
         return out if len(parts) > 1 else out[0]
 
     # ---- look-ups ---------------------------------------------------------------------------

@@ -33,6 +33,7 @@ import attrs
 from ..errors import ValidationError, ViscoContactError
 
 from .._blas import single_blas_thread  # noqa: F401  (re-exported)
+from .._threads import set_threads
 
 
 # ---- backends -----------------------------------------------------------------------------------
@@ -78,8 +79,10 @@ class ProcessBackend:
         import multiprocessing
 
         self.workers = workers
+        # one influence-loop thread per worker: the workers already take a core each
         self.pool = concurrent.futures.ProcessPoolExecutor(
-            max_workers=workers, mp_context=multiprocessing.get_context("spawn"))
+            max_workers=workers, mp_context=multiprocessing.get_context("spawn"),
+            initializer=set_threads, initargs=(1,))
 
     def submit(self, fn: Callable, *args) -> concurrent.futures.Future:
         return self.pool.submit(fn, *args)
@@ -187,6 +190,7 @@ _ONE_POINT = threading.Lock()
 
 def _alone(fn: Callable, *args):
     with _ONE_POINT:
+        set_threads(1)          # one influence-loop thread: the cluster's workers share its cores
         return fn(*args)
 
 

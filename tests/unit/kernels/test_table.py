@@ -204,3 +204,65 @@ def test_a_subclass_that_overrides_the_antiderivative_keeps_it():
     xi = 0.5 * (a + b)
     assert np.allclose(element_integrals(doubled.antiderivative, xi, a, b),
                        2.0 * element_integrals(pk.antiderivative, xi, a, b), rtol=1e-14, atol=0)
+
+
+@settings(max_examples=30, deadline=None)
+@given(rheology=prony_series(max_terms=3), zeta=log_uniform(-8.0, 8.0),
+       kernel=st.sampled_from(KERNELS), seed=st.integers(0, 2**16),
+       contacts=st.integers(1, 6), elements=st.integers(1, 40))
+def test_the_compiled_slopes_are_the_slopes_of_the_pieces(rheology, zeta, kernel, seed,
+                                                          contacts, elements):
+    """``pairwise`` of the table-backed slopes (the compiled loop) against the kernel's pieces,
+    at collocation points minus mesh nodes as the edge Jacobian takes them, to the tolerance of
+    the table's own slopes (1e-10 of the kernel's scale plus the value); a point on a node gives
+    the table's value there (the infinite slope of ``x log|x|`` at 0)."""
+    from viscocontact.kernels.prepared import pairwise
+
+    pk = kernel.prepare(rheology, zeta)
+    if pk.table is None:
+        return
+    rng = np.random.default_rng(seed)
+    a, b = _contacts(rng, contacts, elements)
+    nodes = np.unique(np.concatenate([a, b]))
+    xi = np.concatenate([0.5 * (a + b), rng.uniform(-2 * np.pi, 2 * np.pi, 7)])
+    got = pairwise(pk.slope_pair, xi, nodes)
+    assert got.shape == (2, xi.size, nodes.size)
+    x = xi[:, None] - nodes[None, :]
+    far = np.abs(np.mod(x + np.pi, 2 * np.pi) - np.pi) > 1e-200
+    ref = pk.slope_pair_terms(x)
+    tol = 1e-10 * (_scale(pk) + np.abs(ref))
+    with np.errstate(invalid="ignore"):         # inf - inf on a node, not compared
+        error = np.abs(got - ref)
+    assert np.all(error[:, far] < tol[:, far])
+    single = pairwise(pk.antiderivative_slope, xi, nodes)
+    assert np.array_equal(single, got[0])
+    on_node = pairwise(pk.slope_pair, nodes[:3], nodes)
+    table = pk.table.slope_pair(nodes[:3, None] - nodes[None, :])
+    finite = np.isfinite(table)
+    assert np.array_equal(on_node[~finite], table[~finite])
+    assert np.all(np.abs(on_node[finite] - table[finite])
+                  < 1e-10 * (_scale(pk) + np.abs(table[finite])))
+
+
+@pytest.mark.parametrize("count", [1, 2, 3])
+def test_threads_change_no_bit_of_the_compiled_loops(count):
+    """Rows split between threads (``viscocontact._threads``) give the one-thread result bit
+    for bit, for the integrals and the slopes, on a call large enough to be split."""
+    from viscocontact._threads import SPLIT_MIN, set_threads
+    from viscocontact.kernels.prepared import pairwise
+
+    pk = HalfPlane().prepare(SLS, 1e-2)
+    a, b = _contacts(np.random.default_rng(7), 6, 60)
+    xi = 0.5 * (a + b)
+    xi2 = np.concatenate([xi, xi + 1e-3])
+    assert xi2.size * a.size >= SPLIT_MIN            # the calls below are split
+    try:
+        set_threads(1)
+        ref = (element_integrals(pk.antiderivative_pair, xi2, a, b),
+               pairwise(pk.slope_pair, xi2, np.concatenate([a, b])))
+        set_threads(count)
+        got = (element_integrals(pk.antiderivative_pair, xi2, a, b),
+               pairwise(pk.slope_pair, xi2, np.concatenate([a, b])))
+    finally:
+        set_threads(None)
+    assert all(np.array_equal(r, g) for r, g in zip(ref, got))

@@ -3,6 +3,7 @@ import pytest
 
 from viscocontact.errors import ValidationError
 from viscocontact.studies import Sweep, run
+from viscocontact._threads import threads
 from viscocontact.studies.parallel import (ProcessBackend, SerialBackend,
                                            backend, single_blas_thread)
 
@@ -34,6 +35,8 @@ def test_backend_choice():
     try:
         assert isinstance(pool, ProcessBackend) and pool.workers == 2
         assert pool.wait([pool.submit(max, 1, 2)])[0].result() == 2
+        # each worker takes a core: its influence loop runs on one thread
+        assert pool.wait([pool.submit(threads)])[0].result() == 1
     finally:
         pool.close()
 
