@@ -11,9 +11,9 @@ default mesh and the default solver of an adhesive scene (Broyden), from first t
 The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one BLAS thread
 (median of five), measured in the same run so that the ratio does not depend on the machine's
 load. The solves run BLAS on one thread too; their influence loop splits its rows between the
-threads of ``--threads`` (default ``VISCOCONTACT_THREADS`` or the cores:
-``viscocontact._threads``). Prints one line per seed and the median; ``--profile FILE`` writes
-the cProfile statistics of the first seed to FILE instead of timing the rest.
+threads of ``--threads`` (default ``VISCOCONTACT_THREADS`` or the cores). Prints one line per
+seed and the median; ``--profile FILE`` writes the cProfile statistics of the first seed to FILE
+instead of timing the rest.
 
 Before the timed solves a small adhesive sinusoid is solved once and its time printed as the
 process's start: the package's imports, numba and its cached machine code (0.6-1 s), which a
