@@ -324,7 +324,8 @@ def _table_parts(antiderivative):
 
 _TABLE_PARTS = {PreparedKernel.antiderivative: "F", PreparedKernel.antiderivative_pair: "FE",
                 PreparedKernel.even_antiderivative: "E"}
-_TABLE_SLOPES: dict[object, str] = {PreparedKernel.antiderivative_slope: "F", PreparedKernel.slope_pair: "FE"}
+_TABLE_SLOPES: dict[object, str] = {PreparedKernel.antiderivative_slope: "F",
+                                    PreparedKernel.slope_pair: "FE"}
 
 
 def element_integrals(antiderivative, points, left, right, block: int = BLOCK_SIZE) -> np.ndarray:

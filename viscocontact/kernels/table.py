@@ -165,27 +165,15 @@ class KernelTable:
         :meth:`even` or :meth:`pair`, up to rounding. Large calls split their rows between
         threads (:mod:`viscocontact._threads`; the same values bit for bit)."""
         from . import _compiled
-        from .._threads import split_rows
 
         xi = np.ascontiguousarray(np.ravel(points), dtype=float)
         a = np.ravel(np.asarray(left, dtype=float))
         b = np.ravel(np.asarray(right, dtype=float))
         ends, where = np.unique(np.concatenate([a, b]), return_inverse=True)
         where = where.ravel().astype(np.intp)
-        out = np.empty((len(parts), xi.size, a.size))
-        empty = np.empty((0, 0))
-        out_f = out[parts.index("F")] if "F" in parts else empty
-        out_e = out[parts.index("E")] if "E" in parts else empty
-        lo, hi = where[:a.size], where[a.size:]
-
-        def rows(start, stop):
-            _compiled.integrals(xi[start:stop], ends, lo, hi, self.nodes, self._zero,
-                                *self._buckets, self._coef, self.singular,
-                                out_f[start:stop] if out_f.size else empty,
-                                out_e[start:stop] if out_e.size else empty)
-
-        split_rows(rows, xi.size, xi.size * ends.size)
-        return out if len(parts) > 1 else out[0]
+        return _by_rows(_compiled.integrals, xi, a.size, ends.size, parts,
+                        (ends, where[:a.size], where[a.size:], self.nodes, self._zero,
+                         *self._buckets, self._coef, self.singular))
 
     def pairwise_slopes(self, points, ends, parts: str = "F"):
         """``V'(ξ_l - e_k)`` for every point and end, ``V`` = ``F̃`` (``parts="F"``, as
@@ -193,23 +181,11 @@ class KernelTable:
         compiled loop of :mod:`._compiled` (the same values up to rounding; large calls split
         their rows between threads, bit for bit the same)."""
         from . import _compiled
-        from .._threads import split_rows
 
         xi = np.ascontiguousarray(np.ravel(points), dtype=float)
         e = np.ascontiguousarray(np.ravel(ends), dtype=float)
-        out = np.empty((len(parts), xi.size, e.size))
-        empty = np.empty((0, 0))
-        out_f = out[parts.index("F")] if "F" in parts else empty
-        out_e = out[parts.index("E")] if "E" in parts else empty
-
-        def rows(start, stop):
-            _compiled.slopes(xi[start:stop], e, self.nodes, self._zero, *self._buckets,
-                             self._dcoef, self.singular,
-                             out_f[start:stop] if out_f.size else empty,
-                             out_e[start:stop] if out_e.size else empty)
-
-        split_rows(rows, xi.size, xi.size * e.size)
-        return out if len(parts) > 1 else out[0]
+        return _by_rows(_compiled.slopes, xi, e.size, e.size, parts,
+                        (e, self.nodes, self._zero, *self._buckets, self._dcoef, self.singular))
 
     # ---- look-ups ---------------------------------------------------------------------------
     def _locate(self, x):
@@ -290,6 +266,25 @@ class KernelTable:
             out[0] += self._singular_slope(w)
         self._slope_horner(self._de, j, t, out[1])
         return out.reshape((2,) + np.shape(x))
+
+
+def _by_rows(loop, xi, columns: int, evaluations: int, parts: str, args: tuple):
+    """``loop(xi, *args, out_f, out_e)`` into a new ``(len(parts), xi.size, columns)`` array
+    (``out_f``/``out_e`` the ``"F"``/``"E"`` planes, empty when not asked for), its rows split
+    between threads by :func:`viscocontact._threads.split_rows` (``evaluations`` per row)."""
+    from .._threads import split_rows
+
+    out = np.empty((len(parts), xi.size, columns))
+    empty = np.empty((0, 0))
+    out_f = out[parts.index("F")] if "F" in parts else empty
+    out_e = out[parts.index("E")] if "E" in parts else empty
+
+    def rows(start, stop):
+        loop(xi[start:stop], *args, out_f[start:stop] if out_f.size else empty,
+             out_e[start:stop] if out_e.size else empty)
+
+    split_rows(rows, xi.size, xi.size * evaluations)
+    return out if len(parts) > 1 else out[0]
 
 
 def horner(coef, j, t, out=None):

@@ -139,6 +139,12 @@ def test_row_blocks_do_not_change_the_integrals(block):
     assert np.array_equal(lone, element_integrals(single, xi, a[::3], b[::3]))
 
 
+#: Prony series, ζ, kernels and clustered meshes for the compiled loops' hypothesis tests
+MESHES = dict(rheology=prony_series(max_terms=3), zeta=log_uniform(-8.0, 8.0),
+              kernel=st.sampled_from(KERNELS), seed=st.integers(0, 2**16),
+              contacts=st.integers(1, 6), elements=st.integers(1, 40))
+
+
 def _contacts(rng, count, elements):
     """Edge-clustered chains of elements (contacts) and a few lone elements, as a mesh has."""
     edges = np.sort(rng.uniform(-np.pi, np.pi, 2 * count))
@@ -150,9 +156,7 @@ def _contacts(rng, count, elements):
 
 
 @settings(max_examples=30, deadline=None)
-@given(rheology=prony_series(max_terms=3), zeta=log_uniform(-8.0, 8.0),
-       kernel=st.sampled_from(KERNELS), seed=st.integers(0, 2**16),
-       contacts=st.integers(1, 6), elements=st.integers(1, 40))
+@given(**MESHES)
 def test_the_compiled_loop_gives_the_integrals_of_the_pieces(rheology, zeta, kernel, seed,
                                                              contacts, elements):
     """The compiled loop (the table-backed antiderivatives of a prepared kernel) against the
@@ -207,9 +211,7 @@ def test_a_subclass_that_overrides_the_antiderivative_keeps_it():
 
 
 @settings(max_examples=30, deadline=None)
-@given(rheology=prony_series(max_terms=3), zeta=log_uniform(-8.0, 8.0),
-       kernel=st.sampled_from(KERNELS), seed=st.integers(0, 2**16),
-       contacts=st.integers(1, 6), elements=st.integers(1, 40))
+@given(**MESHES)
 def test_the_compiled_slopes_are_the_slopes_of_the_pieces(rheology, zeta, kernel, seed,
                                                           contacts, elements):
     """``pairwise`` of the table-backed slopes (the compiled loop) against the kernel's pieces,
