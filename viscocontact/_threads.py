@@ -4,10 +4,10 @@ The rows of an influence matrix are independent and each is computed with the sa
 whichever thread computes it, so the result is bit for bit the same for any thread count. The
 compiled loop (:mod:`viscocontact.kernels._compiled`) releases the GIL, so the threads run at
 once. Nothing else is threaded: BLAS stays single-threaded in a solve (:mod:`._blas`), because a
-multi-threaded factorisation sums in another order. Nor are BLAS calls split between Python
-threads: with scipy 1.17's OpenBLAS (0.3.30), two threads calling ``lu_solve`` at once on one
-1200 × 1200 factorisation gave wrong columns in every one of five tries, with or without a thread
-limit (numpy's ``solve`` did not), while the compiled loop touches no BLAS.
+multi-threaded factorisation sums in another order. Nor are a factorisation's solves split
+between Python threads: scipy 1.17's ``lu_solve`` shifts the pivot array to LAPACK's 1-based
+indices and back in place, so two threads solving with one 1200 × 1200 factorisation at once got
+wrong columns in five tries of five (with a copy of the pivots each, none).
 
 The count is the number of cores this process may use, or the environment variable
 ``VISCOCONTACT_THREADS`` (an integer from 1 to 256), or what :func:`set_threads` set last. A
