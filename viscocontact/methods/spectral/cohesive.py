@@ -3,8 +3,8 @@ r"""A Dugdale cohesive law on the uniform grid: the spectral method's finite-ran
 The law of :class:`~viscocontact.adhesion.MaugisDugdale` cell by cell: a uniform tensile stress
 σ̃0 wherever the gap lies in ``[0, η)`` (``η = h̃0/Λ̃``, the range in units of the amplitude),
 nothing where it is ``η`` or more. With the pressure ``p`` (compressive positive, as in
-:mod:`~viscocontact.methods.spectral.solvers`) and the gap ``g = A p - (r̃ - 1 + Δ̃)``, every
-cell is
+:mod:`~viscocontact.methods.spectral.solvers`) and the gap ``g = A p - (r̃ - 1 + Δ̃)``,
+every cell is
 
 * in contact: ``g = 0`` and ``p >= -σ̃0``;
 * cohesive: ``p = -σ̃0`` and ``0 <= g < η``;
@@ -112,8 +112,8 @@ def tip_positions(gap, contact, law: GridLaw) -> list[tuple[float, float]]:
 def tip_weights(extents, points: int) -> np.ndarray:
     """The share of each cell under the cohesive stress for runs of extents ``[L, R]``
     (:func:`tip_positions`): the cells within a run wholly, the cell that holds a tip in
-    proportion to its part inside (a tip quantised to whole cells moves the load by up to ``σ̃0 h`` per tip, a
-    first-order error that, on a slow solid, drowns its small friction)."""
+    proportion to its part inside (a tip quantised to whole cells moves the load by up to
+    ``σ̃0 h`` per tip, a first-order error that, on a slow solid, drowns its small friction)."""
     w = np.zeros(points)
     for lo, hi in extents:
         if hi - lo >= points:
@@ -166,11 +166,6 @@ class CohesiveSolution:
     weights: np.ndarray
     gap: np.ndarray
     sets: int
-
-    @property
-    def ranged(self) -> np.ndarray:
-        """Cells where the law acts (contact, zones and tips)."""
-        return self.weights > 0.0
 
 
 def _matches(old, new, points: int) -> bool:
@@ -268,13 +263,12 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
                        max_updates=max_updates, max_iterations=max_iterations, workers=workers,
                        **control)
         counts = []
+        sol = None
         if k > 1 or circulant.symmetric:      # from the last solution: the tips moved a little
-            tried = grid_solve(circulant, shifted, start_penetration=delta if load else None,
-                               **options)
-            counts.append(tried)
-        if counts and (tried.converged or circulant.symmetric):
-            sol = tried
-        else:
+            sol = grid_solve(circulant, shifted, start_penetration=delta if load else None,
+                             **options)
+            counts.append(sol)
+        if sol is None or not (sol.converged or circulant.symmetric):
             # a start far from the solution (the adhesionless contact, a coarser grid's carried
             # over): the active set then needs damped steps by the dozen (on a sinusoid at
             # ζ = 1e-2 it failed in 100), so it starts from the solution for the operator's

@@ -562,7 +562,8 @@ class Spectral(SolutionMethod):
         loaded = current.contact
         pm = float(p.mean())
         if law is not None:
-            w = current.weights if current.weights is not None else np.zeros(grid.points)
+            w = current.weights
+            assert w is not None            # a cohesive law's measures carry its weights
             alone = sum(1 for f, n in runs(w > 0)
                         if not loaded[(f + np.arange(n)) % grid.points].any())
             extras["cohesive"] = {
