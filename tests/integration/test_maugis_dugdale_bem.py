@@ -2,12 +2,14 @@
 (viscocontact.reference.maugis_dugdale), Johnson's JKR-type limit and Westergaard."""
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 from viscocontact import (ContactProblem, Discretization, Elastic, Newton, Sinusoid,
                           StandardLinearSolid)
 from viscocontact.adhesion import MaugisDugdale
 from viscocontact.reference.johnson import JohnsonWavy
 from viscocontact.reference.maugis_dugdale import MaugisDugdaleWavy
+from viscocontact.reference.westergaard import westergaard_area
 
 AMP, GAMMA = 0.1, 0.05          # Λ̃ and Γ̃ = γ̃/Λ̃²
 
@@ -71,17 +73,47 @@ def test_short_range_limit_is_johnson():
     assert errs[1] < 1e-3 and errs[0] / errs[1] > 3
 
 
-def test_zones_that_meet_fail_with_the_reason():
-    """A range beyond the deepest gap (η = 3, the trough gap is about 2): the gap is below the
-    range everywhere outside the contact, the zones would fill it and meet across the period,
-    which the model does not handle: a clear failure that names it. (With the analytic
-    Jacobian the approach closes past those contact sets; the closed interface then carries
-    more than σ̃0, and the message gives both.)"""
+@pytest.mark.parametrize("rheology, zeta", [(Elastic(), None),
+                                             (StandardLinearSolid(beta=10.0), 1.0)])
+def test_a_neck_within_the_range_fills_and_is_the_adhesionless_solution_under_more_load(
+        rheology, zeta):
+    """A range beyond the deepest gap (η = 3, the trough gap is about 2): the gap stays below the
+    range everywhere outside the contact, so the zones fill the rest of the period and the
+    contact edges have no tips, only a bounded stress. A uniform tension σ̃0 over the whole
+    period deforms the solid by a constant only, so the stress is the adhesionless one at
+    ``p̃∞ + σ̃0`` less σ̃0, elastic or viscoelastic: the area is the adhesionless area at that
+    load (Westergaard's when elastic), and the tangential force is the same (measured: Ã
+    -7.7e-6 elastic, -6.8e-5 on the SLS, the edge zones' offset; the force to 1e-8).
+    Before zones that fill a neck were modelled, this failed and said so."""
     model = MaugisDugdale(gamma=1e-3 * AMP**2, range=3.0 * AMP)
-    r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=Elastic(), adhesion=model,
-                       mean_pressure=0.3, solver=Newton()).solve()
-    assert not r.converged
-    assert "Maugis-Dugdale zones" in r.message
+    extra = model.strength(AMP)
+    kw = dict(profile=Sinusoid(amplitude=AMP), rheology=rheology, solver=Newton())
+    if zeta is not None:
+        kw["zeta"] = zeta
+    r = ContactProblem(adhesion=model, mean_pressure=0.3, **kw).solve()
+    assert r.converged, r.message
+    ref = ContactProblem(mean_pressure=0.3 + extra, **kw).solve()
+    assert abs(r.area / ref.area - 1) < 2e-4
+    assert r.friction * 0.3 == pytest.approx(ref.friction * (0.3 + extra), rel=1e-6)
+    if zeta is None:
+        assert abs(r.area / (westergaard_area(0.3 + extra)) - 1) < 1e-3
+
+
+@pytest.mark.parametrize("lam, p", [(0.5, 0.1), pytest.param(0.3, 0.05, marks=pytest.mark.slow)])
+def test_saturated_zones_are_the_wavy_solution(lam, p):
+    """DMT-like ranges (λ = 0.5 and 0.3: η = 0.80 and 1.33) at loads above the closure maximum
+    of the partial branch, where the reference's only state is saturated: Westergaard's trough
+    gap is within the range, the zones of the period fill the rest of it, and
+    ``p̃∞ = sin²(Ã/4) - σ̃0``. Measured: Ã 1.0e-4 below it (the edge zones' offset of the
+    other tests). Before necks filled by their zones were modelled, these stalled in the zone
+    iteration."""
+    ref, r = _solve(lam, p)
+    assert r.converged, r.message
+    exact = brentq(lambda a: ref.modulus_ratio * np.sin(a / 4) ** 2 - ref.cohesive_stress - p,
+                   1e-6, 2 * np.pi - 1e-9)
+    assert abs(r.area / exact - 1) < 5e-4
+    zones = r.edge_terms.effective_work * ref.h0**2 / (4 * GAMMA)       # d/a0 times a0
+    assert np.sum(zones) == pytest.approx(2 * np.pi - r.area, rel=1e-9)
 
 
 @pytest.mark.parametrize("Gamma", [1e-5, pytest.param(1e-3, marks=pytest.mark.slow)])
@@ -349,8 +381,8 @@ def test_a_rough_merged_contact_never_passes_with_tension_beyond_the_cohesive_st
     """The thesis rough profile with 100 nm zones (seed 0, p̃∞ = 0.3, ζ = 1): the approach merged
     three contacts across two valleys into one that carried 19.6 inside against σ̃0 = 0.77, and
     the BEM reported it converged. It now splits the contact there; the opened neck's zones then
-    meet, which the BEM does not model, and the solve says so. The spectral method's cohesive
-    grid finds an equilibrium with five contacts, each within the law."""
+    meet across a gap beyond the range, which has no zones, and the solve says so. The spectral
+    method's cohesive grid finds an equilibrium with five contacts, each within the law."""
     import attrs
 
     from viscocontact.methods.spectral import Spectral

@@ -26,9 +26,16 @@ Dugdale zone ``q0a0 = h̃0²/(4γ̃)`` (relaxed modulus; a viscoelastic zone lie
 ``[a0/2, βa0]``), so that with the default ``edge_resolution = 0.1`` the fit's elements span
 ``a0/20``.
 
-Limitations (reported, never passed as converged): zones of neighbouring contacts (or of one
-contact across the period) that meet; a gap that falls below the range outside every zone (the
-law would act there too, without a contact edge) — :meth:`gap_violation`.
+Necks held by the cohesive traction alone. Where the gap stays below the range across the
+whole neck between two contacts (or across the rest of the period beside one contact), the two
+zones fill it: there are no tips, the residual of the neck's edges is their ``K̃``, and the
+equilibrium is bounded stress at both (:meth:`field_solution`, :meth:`residuals`). A filled
+neck whose gap exceeds the range somewhere is not admissible; zones that would meet across such
+a neck have no lengths for these edges (a point the solver steps back from).
+
+Limitations (reported, never passed as converged): a gap that falls below the range outside
+every zone and contact (the law would act there too, without a contact edge: tension without
+contact) — :meth:`gap_violation`.
 """
 from __future__ import annotations
 
@@ -36,13 +43,19 @@ import attrs
 import numpy as np
 
 from .._validation import in_range
-from ..contact.cohesive import ZoneError, intensity, tips, zone_derivatives, zone_fields
+from ..contact.cohesive import (ZoneError, filled, intensity, partner, room, tips,
+                                zone_derivatives, zone_fields, zone_widths)
 from .base import AdhesionLimitation, AdhesionModel, EdgeTerms
 
 #: Resolved length of the edge mesh as a fraction of the quasi-static zone ``h̃0²/(4γ̃)``.
 ZONE_RESOLUTION = 1.0 / 16.0
 #: A gap below ``(1 - GAP_MARGIN)·η`` outside the zones is a violation (:meth:`gap_violation`).
 GAP_MARGIN = 1e-3
+#: Weight of the free fraction of a neck in the residual of zones about to fill it
+#: (:meth:`MaugisDugdale.residuals`).
+SLACK = 10.0
+#: Points across a filled neck at which its largest gap is sought.
+NECK_POINTS = 48
 
 
 @attrs.frozen(kw_only=True)
@@ -112,6 +125,11 @@ class MaugisDugdale(AdhesionModel):
 
     def field_solution(self, mesh, kernel, shape, control: dict, *, antisymmetric: bool = False,
                        previous=None):
+        """The field with the zones that bound the stress at every edge
+        (:func:`~viscocontact.contact.cohesive.zone_fields`, started from ``previous``'s zones
+        and filled necks). A neck may be filled only where its gap stays below the range; an
+        open neck whose gap stays between 0 and the range between the tips is filled (the law
+        acts across it). Raises :class:`AdhesionLimitation` where no zones bound the stress."""
         from ..contact.fields import solve_fields
 
         base = solve_fields(mesh, kernel, shape, antisymmetric=antisymmetric, **control)
@@ -119,14 +137,30 @@ class MaugisDugdale(AdhesionModel):
             return base
         n = len(mesh.edges)
         loads = getattr(previous, "loads", None)
+        full = None
         if loads is not None and len(loads.stress) == n:
             start = np.asarray(loads.width, dtype=float)
+            full = filled(previous.mesh.edges, start)
         else:
             start = np.full(n, min(self.quasi_static_zone, 0.1 * float(np.min(np.diff(
                 mesh.edges)[0::2]))))
+        stress = self.strength(shape.amplitude)
+
+        def admissible(fields, necks):
+            return not np.any(self._reclassified(fields, kernel, shape, necks)[1])
+
         try:
-            return zone_fields(base, kernel, stress=self.strength(shape.amplitude),
-                               control=control, start=start)
+            fields = zone_fields(base, kernel, stress=stress, control=control, start=start,
+                                 full=full, admissible=admissible)
+            # open zones whose free interval between the tips has no gap beyond the range (and
+            # none below the surface): the law acts across it, so the zones fill the neck
+            narrow = self._reclassified(fields, kernel, shape)[0]
+            if np.any(narrow):
+                fields = zone_fields(base, kernel, stress=stress, control=control,
+                                     start=zone_widths(fields),
+                                     full=narrow | filled(mesh.edges, zone_widths(fields)),
+                                     admissible=admissible)
+            return fields
         except ZoneError as exc:
             raise AdhesionLimitation(f"Maugis-Dugdale zones: {exc}") from exc
 
@@ -152,32 +186,138 @@ class MaugisDugdale(AdhesionModel):
     def residuals(self, ctx) -> np.ndarray:
         """``K̃_c(√(g̃(c_i)/η) - 1) + min(K̃_i, 0)``: the tip condition in stress-intensity units
         (``g̃/η ≈ (K_app/K_c)²`` for a short zone), continued by the compressive ``K̃`` of an edge
-        without a zone; increasing as the edge moves out."""
+        without a zone; increasing as the edge moves out.
+
+        A neck filled by its two zones (:func:`~viscocontact.contact.cohesive.filled`) has no
+        tips: its edges' residual is their ``K̃``, plus ``K̃_c(√(g̃_max/η) - 1)`` where the
+        largest gap in the neck exceeds the range (the traction would stop there: no filled
+        equilibrium). Zones about to fill their neck take ``max(tip condition, -S K̃_c s)`` with
+        ``s`` the free fraction of the neck (:data:`SLACK`), which tends to the filled neck's
+        residual where the zones meet, so that the residual is continuous across the switch
+        (both vanish there only if the gap where they meet is below the range)."""
         if self.gamma == 0:
             return ctx.stress_intensity()
+        f = ctx.fields
+        d = np.asarray(f.loads.width, dtype=float)
+        edges = f.mesh.edges
+        kc = self.critical_intensity(ctx.amplitude)
         g = self.tip_gaps(ctx)
         k = self.intensity(ctx)
-        return (self.critical_intensity(ctx.amplitude) * (np.sqrt(np.maximum(g, 0.0)) - 1.0)
-                + np.minimum(np.where(ctx.fields.loads.width > 0, 0.0, k), 0.0))
+        tip = kc * (np.sqrt(np.maximum(g, 0.0)) - 1.0)
+        slack = 1.0 - (d + d[partner(len(d))]) / room(edges)
+        r = np.where(d > 0, np.maximum(tip, -SLACK * kc * slack), tip + np.minimum(k, 0.0))
+        full = filled(edges, d)
+        if np.any(full):
+            over = kc * np.maximum(np.sqrt(np.maximum(self.neck_gaps(ctx), 0.0)) - 1.0, 0.0)
+            r = np.where(full, k + over, r)
+        return r
+
+    def _reclassified(self, fields, kernel, shape, necks=None) -> tuple[np.ndarray, np.ndarray]:
+        """``(narrow, wide)``: the edges of open necks whose gap stays between 0 and the range
+        between the tips (they fill), and of filled necks with a gap beyond the range (they
+        cannot be filled); of the edges ``necks`` only, when given."""
+        edges = fields.mesh.edges
+        n = len(edges)
+        d = np.asarray(fields.loads.width, dtype=float)
+        narrow, wide = np.zeros(n, bool), np.zeros(n, bool)
+        full = filled(edges, d)
+        if necks is not None:
+            full = full & np.asarray(necks, bool)
+        c = tips(edges, d)
+        space = room(edges)
+        eta = self.opening(shape.amplitude)
+        for i in range(1, n, 2):
+            j = (i + 1) % n
+            if necks is not None and not (necks[i] or necks[j]):
+                continue
+            lo = edges[i] if full[i] else c[i]
+            hi = lo + (space[i] if full[i] else space[i] - d[i] - d[j])
+            top, bottom = -np.inf, np.inf
+            # a few points first: on a neck much wider than the range they exceed it at once
+            for m in (() if full[i] else (7,)) + (NECK_POINTS,):
+                x = lo + (hi - lo) * np.arange(1, m + 1) / (m + 1)
+                gap = (fields.displacement(kernel, x)
+                       - (shape.heights(x) - 1.0 + fields.penetration))
+                top = max(top, float(np.max(gap)))
+                bottom = min(bottom, float(np.min(gap)))
+                if top > eta or bottom < 0.0:
+                    break
+            if full[i] and top > eta:
+                wide[i] = wide[j] = True
+            elif not full[i] and 0.0 <= bottom and top < eta:
+                # (where the profile penetrates, contacts are born instead)
+                narrow[i] = narrow[j] = True
+        return narrow, wide
+
+    def neck_gaps(self, ctx) -> np.ndarray:
+        """``g̃_max/η`` in the neck next to every edge whose neck is filled (0 elsewhere): the
+        largest gap of :data:`NECK_POINTS` points across the neck, refined by the parabola
+        through the largest and its neighbours."""
+        f = ctx.fields
+        edges = f.mesh.edges
+        d = np.asarray(f.loads.width, dtype=float)
+        full = filled(edges, d)
+        out = np.zeros(len(edges))
+        eta = self.opening(ctx.amplitude)
+        for i in np.flatnonzero(full & (np.arange(len(edges)) % 2 == 1)):
+            lo = edges[i]
+            hi = lo + room(edges)[i]
+            x = lo + (hi - lo) * np.arange(1, NECK_POINTS + 1) / (NECK_POINTS + 1)
+            gap = f.displacement(ctx.kernel, x) - (ctx.shape.heights(x) - 1.0 + f.penetration)
+            j = int(np.argmax(gap))
+            top = float(gap[j])
+            if 0 < j < len(x) - 1:
+                a, b, c = gap[j - 1], gap[j], gap[j + 1]
+                curv = a - 2 * b + c
+                if curv < 0:
+                    top = float(b - 0.125 * (c - a) ** 2 / curv)
+            out[i] = out[(i + 1) % len(edges)] = top / eta
+        return out
 
     def residual_derivatives(self, ctx, dfields) -> np.ndarray | None:
         """The derivatives of :meth:`residuals` in every edge and the penetration along the
         zones' own equations (:func:`~viscocontact.contact.cohesive.zone_derivatives`): at a
-        zone ``K̃_c ġ/(2√(g̃ η))``, at an edge without a zone its compressive ``K̃``'s."""
+        zone ``K̃_c ġ/(2√(g̃ η))`` (or the slack term's, ``S K̃_c (ḋ_i + ḋ_j - (d_i + d_j)
+        Ẇ/W)/W`` for a neck of room ``W``), at an edge without a zone its compressive ``K̃``'s,
+        at a filled neck its ``K̃``'s. None where a filled neck's gap exceeds the range (a point
+        the model rejects) or the zone lengths do not follow the edges."""
         if self.gamma == 0:
             return dfields.stress_intensity()
         z = self._zone_derivatives(ctx, dfields)
         if z is None:
             return None
+        f = ctx.fields
+        d = np.asarray(f.loads.width, dtype=float)
+        edges = f.mesh.edges
+        n = len(edges)
         g = self.tip_gaps(ctx)
-        zone = ctx.fields.loads.width > 0
+        zone = d > 0
         k = self.intensity(ctx)
+        kc = self.critical_intensity(ctx.amplitude)
         eta = self.opening(ctx.amplitude)
         root = np.sqrt(np.where(zone & (g > 0), g, 1.0))
-        rate = np.where(zone & (g > 0), self.critical_intensity(ctx.amplitude) / (2 * root * eta),
-                        0.0)
-        return np.where(zone[:, None], rate[:, None] * z.gaps,
-                        np.where((k < 0)[:, None], z.intensity, 0.0))
+        rate = np.where(zone & (g > 0), kc / (2 * root * eta), 0.0)
+        out = np.where(zone[:, None], rate[:, None] * z.gaps,
+                       np.where((k < 0)[:, None], z.intensity, 0.0))
+        facing = partner(n)
+        space = room(edges)
+        slack = 1.0 - (d + d[facing]) / space
+        tip = kc * (np.sqrt(np.maximum(g, 0.0)) - 1.0)
+        bound = zone & (-SLACK * kc * slack > tip)
+        full = filled(edges, d)
+        if np.any(bound) or np.any(full):
+            # the room of each edge's neck, X_L - X_R, moves with its two edges
+            right = np.where(np.arange(n) % 2 == 1, np.arange(n), (np.arange(n) - 1) % n)
+            unit = np.eye(out.shape[1])
+            d_room = unit[(right + 1) % n] - unit[right]
+            d_slack = (-(z.lengths + z.lengths[facing]) / space[:, None]
+                       + ((d + d[facing]) / space**2)[:, None] * d_room)
+            out = np.where(bound[:, None], -SLACK * kc * d_slack, out)
+        if np.any(full):
+            if np.any(self.neck_gaps(ctx)[full] > 1.0):
+                return None
+            out = np.where(full[:, None], z.intensity, out)
+        return out
 
     def pressure_derivatives(self, ctx, dfields) -> np.ndarray | None:
         """``∂p̃∞`` with the zones' force, their lengths following the edges."""

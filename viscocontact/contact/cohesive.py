@@ -15,8 +15,14 @@ so ``g̃(c_i) = η`` has a double root there and cannot fix ``d_i``; ``K̃_i(d)`
 monotonically with the zone (like ``-σ̃0√(8d_i/π)``), and at fixed bounded stress the tip gap rises
 monotonically as the edge moves out (``δ = K²/(σ0E')``).
 
-Failures raise :class:`ZoneError` with the reason: the zones of neighbouring contacts (or of one
-contact across the period) meet, or the iteration does not converge.
+A neck whose two zones have no roots before they meet (the facing edges need more traction
+than the whole neck carries) is filled by them (:func:`filled`): the neck is then held by the
+cohesive traction alone, without tips, and its edges keep the stress intensity they have, the
+outer residual there. The caller says whether a neck may be filled (its gap stays below the
+range across it).
+
+Failures raise :class:`ZoneError` with the reason: zones that meet across a neck that may not be
+filled, or the iteration does not converge.
 """
 from __future__ import annotations
 
@@ -40,8 +46,10 @@ EDGE_STEP = 1e-12
 ITERATIONS = 60
 #: Largest growth factor of a zone's ``√d`` in one Newton iteration.
 GROWTH = 1.5
-#: Zones are kept this fraction of the free interval short of meeting their neighbour.
+#: Zones are kept this fraction of the free interval short of meeting their neighbour ...
 ROOM = 1.0 - 1e-9
+#: ... and zones that fill it (a filled neck) cover it to round-off.
+FILL = 1.0 - 1e-12
 
 
 class ZoneError(ViscoContactError):
@@ -73,7 +81,24 @@ def room(edges: np.ndarray) -> np.ndarray:
     return out
 
 
-def _partner(n: int) -> np.ndarray:
+def zone_widths(fields: FieldSolution) -> np.ndarray:
+    """The zone lengths of a field with zones (:func:`zone_fields`)."""
+    if fields.loads is None:
+        raise ValueError("fields without zones (loads is None)")
+    return np.asarray(fields.loads.width, dtype=float)
+
+
+def filled(edges: np.ndarray, lengths: np.ndarray) -> np.ndarray:
+    """Which zones fill their free interval together with the facing zone (a neck held by the
+    cohesive traction alone, :func:`zone_fields`): their lengths add up to the room, where
+    zones that stop short of meeting keep at least ``1 - ROOM`` of it free."""
+    d = np.asarray(lengths, dtype=float)
+    if d.size == 0:
+        return np.zeros(0, bool)
+    return d + d[partner(d.size)] >= FILL * room(edges)
+
+
+def partner(n: int) -> np.ndarray:
     """Index of the edge facing each edge across its free interval (periodic)."""
     idx = np.arange(n)
     return np.where(idx % 2 == 1, (idx + 1) % n, (idx - 1) % n)
@@ -125,7 +150,7 @@ def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control:
     loads = fields.loads
     if loads is None:
         raise ValueError("intensity_jacobian: fields without zones (loads is None)")
-    d = np.asarray(loads.width, dtype=float)
+    d = zone_widths(fields)
     ds = _growth_stresses(fields, kernel, stress, tips(mesh.edges, d)[columns])
     if control.get("mean_pressure") is not None:
         h = mesh.width
@@ -138,7 +163,8 @@ def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control:
 
 
 def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
-                start: np.ndarray) -> FieldSolution:
+                start: np.ndarray, full: np.ndarray | None = None,
+                admissible=None) -> FieldSolution:
     """The field of ``base``'s contacts with the zones that bound the stress at every edge.
 
     For fixed contact edges, each zone length ``d_i`` is set so that the stress is bounded at its
@@ -163,6 +189,12 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
         ``{"penetration": Δ̃}`` or ``{"mean_pressure": p̃∞}``.
     start : (n_edges,) array
         Zone lengths to start from (>= 0).
+    full : (n_edges,) bool array, optional
+        Zones that filled their neck at the start (:func:`filled` of the previous field).
+    admissible : callable, optional
+        ``admissible(fields, necks)``: whether the necks of the edges ``necks`` may be filled
+        in ``fields`` (the law acts across them: the gap stays below the range). Without it
+        every neck may.
 
     Returns
     -------
@@ -172,19 +204,57 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
     Raises
     ------
     ZoneError
-        When the zones meet a neighbour's or the iteration does not converge.
+        When the iteration does not converge.
+
+    Notes
+    -----
+    Zones whose roots lie beyond their meeting point (the facing edges need more traction than
+    the whole neck between them carries: no root before the zones meet) fill the neck
+    together, if it is ``admissible``: the neck is then held by the cohesive traction alone,
+    and its two edges are left with the stress intensity they have (their residual,
+    :class:`~viscocontact.adhesion.MaugisDugdale`). Otherwise these edges have no zones
+    (:class:`ZoneError`). Zones filled at the start (``full``) stay filled while admissible.
     """
     edges = base.mesh.edges
     n = len(edges)
-    free = ROOM * room(edges)
-    partner = _partner(n)
+    space = room(edges)
+    free = ROOM * space
+    facing = partner(n)
     weights = intensity_matrix(base.mesh, BOUNDED_POWERS)
 
     def evaluate(t):
         f = with_loads(base, kernel, zone_loads(edges, t * t, stress), **control)
         return f, weights @ f.sigma
 
+    def fill(t, which):
+        """``√d`` with the zones of ``which`` tiling their necks, in the ratio they had."""
+        d = t * t
+        total = d + d[facing]
+        share = np.where(total > 0.0, d / np.where(total > 0.0, total, 1.0), 0.5)
+        return np.sqrt(np.where(which, share * space, d))
+
     t = np.sqrt(np.clip(np.asarray(start, dtype=float), 0.0, 0.5 * free))
+    full = np.zeros(n, bool) if full is None else np.asarray(full, bool)
+    full = full & full[facing]
+    toggles = 0
+    screened = np.zeros(n, bool)        # zones that have made their edge's K̃ negative
+    tested = np.zeros(n, bool)          # necks tried filled
+    def allowed(f, necks):
+        return admissible is None or bool(admissible(f, necks))
+
+    def finished(f):
+        # the other zones' lengths moved since the necks were filled: are they still?
+        necks = filled(edges, zone_widths(f))
+        if np.any(necks) and not allowed(f, necks):
+            raise ZoneError(_MEET)
+        return f
+
+    if np.any(full):
+        t = fill(t, full)
+        if not allowed(evaluate(t)[0], full):
+            # the necks filled before no longer hold: they open, from short zones
+            t = np.where(full, np.sqrt(0.05 * space), t)
+            full = np.zeros(n, bool)
     half = 0.5 * float(np.mean(edges[1::2] - edges[0::2]))
     width = np.repeat(edges[1::2] - edges[0::2], 2)       # of each edge's contact
     # the last positive √d of each zone (a zone whose Newton step went past zero is closed at
@@ -195,14 +265,14 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
     last = np.inf
     for _ in range(ITERATIONS):
         scale = stress * np.sqrt(max(float(np.max(t * t)), half))
-        active = ~((t == 0.0) & (k <= 0.0))
+        active = ~((t == 0.0) & (k <= 0.0)) & ~full
         size = float(np.max(np.abs(k[active]))) if np.any(active) else 0.0
         if size <= EDGE_TOLERANCE * scale + 1e-15:
-            return fields
+            return finished(fields)
         if size <= NOISE * scale and size > 0.5 * last:
-            return fields                 # at the fit's round-off: no longer decreasing
+            return finished(fields)       # at the fit's round-off: no longer decreasing
         last = size
-        reopen = (t == 0.0) & (k > 0.0)
+        reopen = (t == 0.0) & (k > 0.0) & ~full
         if np.any(reopen):
             # an edge without a zone whose stress is tensile: its zone opens, at a fraction of
             # the zone it had (the root lies between) or else at Dugdale's short zone
@@ -217,23 +287,50 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
             before = np.where(reopen, t, before)
             fields, k = evaluate(t)
             continue
+        screened |= (t > 0.0) & (k < 0.0)
         idx = np.flatnonzero(active)
         J = intensity_jacobian(fields, kernel, stress=stress, control=control, columns=idx,
                                weights=weights)[idx] * (2.0 * t[idx])
         beyond = np.diag(J) >= 0.0
-        if np.any(beyond):
+        step = None
+        if not np.any(beyond):
+            try:
+                step = np.linalg.solve(J, -k[idx])
+            except np.linalg.LinAlgError:
+                raise ZoneError("the bounded-stress equations of the zones are singular") from None
+            if not np.all(np.isfinite(step)):
+                raise ZoneError("the bounded-stress equations of the zones gave a non-finite "
+                                "step")
+            # a zone that needs to grow (K̃ > 0) told to shrink: past the minimum of K̃, or
+            # held back by its neighbours; only a filled neck is tried then
+            wrong = (k[idx] > 0.0) & (step < 0.0) & (t[idx] > 0.0)
+        else:
+            wrong = beyond
+        if np.any(wrong):
             # past the minimum of K̃ in the zone length (zones long against the contact undo
-            # their own screening): back towards the smallest root
+            # their own screening). A zone that never screened its edge (K̃ > 0 all along) may
+            # have no root: if K̃ stays positive at an edge with its neck filled, the neck fills;
+            # otherwise back towards the smallest root
+            grow = np.zeros(n, bool)
+            grow[idx[wrong]] = True
+            unscreened = grow & (k > 0.0) & ~screened & ~tested
+            if np.any(unscreened) and toggles < 2:
+                neck = unscreened | unscreened[facing]
+                tested |= neck
+                trial = fill(t, full | neck)
+                f_try, k_try = evaluate(trial)
+                if np.any(neck & (k_try >= 0.0)) and allowed(f_try, neck):
+                    toggles += 1
+                    full = full | neck
+                    t, fields, k = trial, f_try, k_try
+                    capped = np.zeros(n, bool)
+                    last = np.inf
+                    continue
+        if np.any(beyond):
             t = t.copy()
             t[idx[beyond]] *= 0.3
             fields, k = evaluate(t)
             continue
-        try:
-            step = np.linalg.solve(J, -k[idx])
-        except np.linalg.LinAlgError:
-            raise ZoneError("the bounded-stress equations of the zones are singular") from None
-        if not np.all(np.isfinite(step)):
-            raise ZoneError("the bounded-stress equations of the zones gave a non-finite step")
         new = t.copy()
         new[idx] = t[idx] + step
         # a step past zero closes the zone: an edge whose stress is compressive without a zone
@@ -249,11 +346,22 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
         # the zones filled the gap and were reported as meeting)
         new = np.where(t > 0.0, np.minimum(new, GROWTH * t), new)
         d = new * new
-        over = d + d[partner] > free
-        if np.any(over):
-            if np.any(over & capped):
+        over = (d + d[facing] > free) & ~full
+        if np.any(over & capped):
+            # capped twice running: no root before the zones meet, so they fill the neck
+            meet = over & capped
+            trial = fill(new, full | meet | meet[facing])
+            f_try, k_try = evaluate(trial)
+            if not allowed(f_try, meet | meet[facing]):
                 raise ZoneError(_MEET)
-            total = np.where(over, d + d[partner], 1.0)     # (two closed zones: 0/0 otherwise)
+            full = full | meet | meet[facing]
+            toggles += 1
+            t, fields, k = trial, f_try, k_try
+            capped = np.zeros(n, bool)
+            last = np.inf
+            continue
+        if np.any(over):
+            total = np.where(over, d + d[facing], 1.0)     # (two closed zones: 0/0 otherwise)
             d = np.where(over, d / total * free, d)
             new = np.sqrt(d)
         capped = over
@@ -261,7 +369,7 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
         t = new
         fields, k = evaluate(t)
         if done:
-            return fields
+            return finished(fields)
     raise ZoneError(f"the bounded-stress equations of the zones did not converge in "
                     f"{ITERATIONS} Newton iterations (largest K̃ {np.max(np.abs(k)):.3g})")
 
@@ -269,7 +377,8 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
 @attrs.frozen(kw_only=True, eq=False)
 class ZoneDerivatives:
     """Derivatives of a field with zones along the zones' own equations (``K̃_i = 0`` at every
-    zone kept, its length following the edges), in the directions of a
+    zone kept, its length following the edges; a filled neck's zones keep their shares of
+    it), in the directions of a
     :class:`~viscocontact.contact.sensitivity.FieldSensitivity`: every edge at fixed
     penetration, then the penetration at fixed edges (``D`` columns).
 
@@ -317,7 +426,7 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDe
     loads = fields.loads
     if loads is None:
         raise ValueError("zone_derivatives: fields without zones (loads is None)")
-    d = np.asarray(loads.width, dtype=float)
+    d = zone_widths(fields)
     act = np.flatnonzero(d > 0)
     m = act.size
     sign = np.tile([-1.0, 1.0], n // 2)[act]      # a tip's motion per unit length of its zone
@@ -338,26 +447,31 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDe
     W, explicit = dfields.fit_motion(BOUNDED_POWERS)
     kx, kd = W @ sx + explicit, W @ sd
     # tip gaps: the stresses, then the elements under the moving tip, the zones, the profile
-    infl = kernel.influence(c, mesh.left, mesh.right)
-    s = dfields.node_weights(fields.sigma)
-    g_nodes = slopes(c[:, None] - dfields.nodes[None, :])
-    at_tip = g_nodes @ s
-    gx = (infl @ sx + E * at_tip[:, None] - g_nodes @ (s[:, None] * dfields.node_vel))
-    gd = infl @ sd + np.diag(sign * at_tip)
-    # the zones seen from the moving tips (each zone's end at its own tip moves with it)
-    diag = np.arange(m)
-    zone_a = slopes(c[:, None] - a[None, :])
-    zone_b = slopes(c[:, None] - b[None, :])
-    zone_a[diag, diag] = np.where(sign < 0, 0.0, zone_a[diag, diag])
-    zone_b[diag, diag] = np.where(sign > 0, 0.0, zone_b[diag, diag])
-    across = zone_a - zone_b
-    gx += stress * (across.sum(axis=1)[:, None] * E - across @ E)
-    # a zone that grows: another's tip sees its tip move (σ̃0 G̃(c_i - c_k)); its own tip moves
-    # past all the zones, and its own load grows at the tip (σ̃0 G̃ at the zone's other end)
-    grow = stress * slopes(c[:, None] - c[None, :])
-    grow[diag, diag] = stress * (sign * (across.sum(axis=1) - across[diag, diag])
-                                 + np.where(sign < 0, zone_b[diag, diag], zone_a[diag, diag]))
-    gd += grow
+    # (a filled neck's two zones meet tip to end, where the kernel's slope is logarithmic;
+    # their rows are not used and are cleared below)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        infl = kernel.influence(c, mesh.left, mesh.right)
+        s = dfields.node_weights(fields.sigma)
+        g_nodes = slopes(c[:, None] - dfields.nodes[None, :])
+        at_tip = g_nodes @ s
+        gx = (infl @ sx + E * at_tip[:, None] - g_nodes @ (s[:, None] * dfields.node_vel))
+        gd = infl @ sd + np.diag(sign * at_tip)
+        # the zones seen from the moving tips (each zone's end at its own tip moves with it)
+        diag = np.arange(m)
+        zone_a = slopes(c[:, None] - a[None, :])
+        zone_b = slopes(c[:, None] - b[None, :])
+        zone_a[diag, diag] = np.where(sign < 0, 0.0, zone_a[diag, diag])
+        zone_b[diag, diag] = np.where(sign > 0, 0.0, zone_b[diag, diag])
+        across = zone_a - zone_b
+        gx += stress * (across.sum(axis=1)[:, None] * E - across @ E)
+        # a zone that grows: another's tip sees its tip move (σ̃0 G̃(c_i - c_k)); its own tip
+        # moves past all the zones, and its own load grows at the tip (σ̃0 G̃ at the zone's
+        # other end)
+        grow = stress * slopes(c[:, None] - c[None, :])
+        grow[diag, diag] = stress * (sign * (across.sum(axis=1) - across[diag, diag])
+                                     + np.where(sign < 0, zone_b[diag, diag],
+                                                zone_a[diag, diag]))
+        gd += grow
     r_slope = dfields.shape.slopes(c)
     gx -= r_slope[:, None] * E
     gx[:, -1] -= 1.0
@@ -366,16 +480,34 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDe
     h = mesh.width
     px = -(dfields.width_vel.T @ fields.sigma + h @ sx) / (2 * np.pi)
     pd = -(h @ sd + stress) / (2 * np.pi)
-    # the lengths that keep K̃ = 0 at every zone
-    dd = -np.linalg.solve(kd[act], kx[act]) if m else np.zeros((0, n_dirs))
+    # the lengths: a zone of a filled neck keeps its share f of the neck (d = f·room, the room
+    # X_L - X_R between the neck's right edge R and left edge L), every other zone keeps K̃ = 0
+    full = filled(mesh.edges, d)[act]
+    dd = np.zeros((m, n_dirs))
+    if np.any(full):
+        space = room(mesh.edges)[act]
+        right = np.where(act % 2 == 1, act, (act - 1) % n)
+        left = (right + 1) % n
+        dd[full] = (d[act][full] / space[full])[:, None] * (
+            np.eye(n_dirs)[left[full]] - np.eye(n_dirs)[right[full]])
+    free = ~full
+    if np.any(free):
+        rows = act[free]
+        dd[free] = -np.linalg.solve(kd[rows][:, free], kx[rows] + kd[rows][:, full] @ dd[full])
     lengths = np.zeros((n, n_dirs))
     lengths[act] = dd
+    # a filled neck has no tips: its zones' rows (where the meeting tips sit on each other's
+    # ends, the kernel's logarithmic slope) are not used
+    gx = np.where(full[:, None], 0.0, gx)
+    gd = np.where(full[:, None], 0.0, gd)
     gaps = np.zeros((n, n_dirs))
     gaps[act] = gx + gd @ dd
+    if not np.all(np.isfinite(gaps)):
+        raise np.linalg.LinAlgError("a zone tip sits on another zone's end")
     return ZoneDerivatives(lengths=lengths, intensity=kx + kd @ dd, gaps=gaps,
                            pressure=px + pd @ dd)
 
 
-_MEET = ("the cohesive zones of neighbouring contacts (or of one contact across the period) "
-         "meet: the gap stays below the range h0 between them, which this model does not "
-         "handle (a zone without contact edges)")
+_MEET = ("no zone lengths bound the stress at these edges: the zones of neighbouring contacts "
+         "(or of one contact across the period) meet, and the gap between them exceeds the "
+         "range h0, so the cohesive traction cannot fill the neck")
