@@ -215,38 +215,46 @@ class MaugisDugdale(AdhesionModel):
     def _reclassified(self, fields, kernel, shape, necks=None) -> tuple[np.ndarray, np.ndarray]:
         """``(narrow, wide)``: the edges of open necks whose gap stays between 0 and the range
         between the tips (they fill), and of filled necks with a gap beyond the range (they
-        cannot be filled); of the edges ``necks`` only, when given."""
+        cannot be filled); of the edges ``necks`` only, when given.
+
+        The gap is sampled at :data:`NECK_POINTS` points across each neck; an open neck is
+        first tried at three (a neck much wider than the range exceeds it at once), all necks
+        in one evaluation of the displacement per stage."""
         edges = fields.mesh.edges
         n = len(edges)
         d = np.asarray(fields.loads.width, dtype=float)
         narrow, wide = np.zeros(n, bool), np.zeros(n, bool)
-        full = filled(edges, d)
+        right = np.arange(1, n, 2)                  # each neck by its right edge
+        left = (right + 1) % n
         if necks is not None:
-            full = full & np.asarray(necks, bool)
-        c = tips(edges, d)
-        space = room(edges)
+            necks = np.asarray(necks, bool)
+            keep = necks[right] | necks[left]
+            right, left = right[keep], left[keep]
+        full = filled(edges, d)[right]
+        lo = np.where(full, edges[right], tips(edges, d)[right])
+        width = np.where(full, room(edges)[right], room(edges)[right] - d[right] - d[left])
         eta = self.opening(shape.amplitude)
-        for i in range(1, n, 2):
-            j = (i + 1) % n
-            if necks is not None and not (necks[i] or necks[j]):
-                continue
-            lo = edges[i] if full[i] else c[i]
-            hi = lo + (space[i] if full[i] else space[i] - d[i] - d[j])
-            top, bottom = -np.inf, np.inf
-            # a few points first: on a neck much wider than the range they exceed it at once
-            for m in (() if full[i] else (7,)) + (NECK_POINTS,):
-                x = lo + (hi - lo) * np.arange(1, m + 1) / (m + 1)
-                gap = (fields.displacement(kernel, x)
-                       - (shape.heights(x) - 1.0 + fields.penetration))
-                top = max(top, float(np.max(gap)))
-                bottom = min(bottom, float(np.min(gap)))
-                if top > eta or bottom < 0.0:
-                    break
-            if full[i] and top > eta:
-                wide[i] = wide[j] = True
-            elif not full[i] and 0.0 <= bottom and top < eta:
-                # (where the profile penetrates, contacts are born instead)
-                narrow[i] = narrow[j] = True
+
+        def extremes(which, m):
+            """Largest and smallest gap at ``m`` points across the necks ``which``."""
+            x = (lo[which, None]
+                 + width[which, None] * (np.arange(1, m + 1) / (m + 1))[None, :]).ravel()
+            gap = (fields.displacement(kernel, x)
+                   - (shape.heights(x) - 1.0 + fields.penetration)).reshape(-1, m)
+            return gap.max(axis=1), gap.min(axis=1)
+
+        top, bottom = np.full(len(right), -np.inf), np.full(len(right), np.inf)
+        first = ~full
+        if np.any(first):
+            top[first], bottom[first] = extremes(first, 3)
+        rest = full | ((top < eta) & (bottom >= 0.0))
+        if np.any(rest):
+            t, b = extremes(rest, NECK_POINTS)
+            top[rest], bottom[rest] = np.maximum(top[rest], t), np.minimum(bottom[rest], b)
+        over = full & (top > eta)
+        within = ~full & (bottom >= 0.0) & (top < eta)   # (a penetrating profile: births)
+        wide[right[over]] = wide[left[over]] = True
+        narrow[right[within]] = narrow[left[within]] = True
         return narrow, wide
 
     def neck_gaps(self, ctx) -> np.ndarray:
