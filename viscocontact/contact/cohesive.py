@@ -27,6 +27,7 @@ filled, or the iteration does not converge.
 from __future__ import annotations
 
 import functools
+from typing import Callable
 
 import attrs
 import numpy as np
@@ -164,7 +165,8 @@ def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control:
 
 def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
                 start: np.ndarray, full: np.ndarray | None = None,
-                admissible=None) -> FieldSolution:
+                admissible: Callable[[FieldSolution, np.ndarray], bool] | None = None
+                ) -> FieldSolution:
     """The field of ``base``'s contacts with the zones that bound the stress at every edge.
 
     For fixed contact edges, each zone length ``d_i`` is set so that the stress is bounded at its
@@ -204,7 +206,8 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
     Raises
     ------
     ZoneError
-        When the iteration does not converge.
+        When the iteration does not converge, or zones meet across a neck that may not be
+        filled.
 
     Notes
     -----
@@ -236,9 +239,9 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
     t = np.sqrt(np.clip(np.asarray(start, dtype=float), 0.0, 0.5 * free))
     full = np.zeros(n, bool) if full is None else np.asarray(full, bool)
     full = full & full[facing]
-    toggles = 0
     screened = np.zeros(n, bool)        # zones that have made their edge's K̃ negative
-    tested = np.zeros(n, bool)          # necks tried filled
+    tested = np.zeros(n, bool)          # necks tried filled (once each)
+
     def allowed(f, necks):
         return admissible is None or bool(admissible(f, necks))
 
@@ -314,13 +317,12 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
             grow = np.zeros(n, bool)
             grow[idx[wrong]] = True
             unscreened = grow & (k > 0.0) & ~screened & ~tested
-            if np.any(unscreened) and toggles < 2:
+            if np.any(unscreened):
                 neck = unscreened | unscreened[facing]
                 tested |= neck
                 trial = fill(t, full | neck)
                 f_try, k_try = evaluate(trial)
                 if np.any(neck & (k_try >= 0.0)) and allowed(f_try, neck):
-                    toggles += 1
                     full = full | neck
                     t, fields, k = trial, f_try, k_try
                     capped = np.zeros(n, bool)
@@ -355,7 +357,6 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
             if not allowed(f_try, meet | meet[facing]):
                 raise ZoneError(_MEET)
             full = full | meet | meet[facing]
-            toggles += 1
             t, fields, k = trial, f_try, k_try
             capped = np.zeros(n, bool)
             last = np.inf
@@ -387,7 +388,8 @@ class ZoneDerivatives:
     lengths : (n_edges, D)
         ``∂d_i``; 0 at an edge without a zone (it stays closed).
     intensity : (n_edges, D)
-        ``∂K̃_i`` of :func:`intensity` (0 to round-off at a zone).
+        ``∂K̃_i`` of :func:`intensity` (0 to round-off at a zone whose length keeps ``K̃ = 0``;
+        a filled neck's edges keep theirs).
     gaps : (n_edges, D)
         ``∂g̃(c_i)``, the tip gaps of :func:`tip_gaps`; 0 at an edge without a zone.
     pressure : (D,)
