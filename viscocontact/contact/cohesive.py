@@ -27,6 +27,7 @@ filled, or the iteration does not converge.
 from __future__ import annotations
 
 import functools
+import weakref
 from typing import Callable
 
 import attrs
@@ -110,13 +111,28 @@ def tip_gaps(fields: FieldSolution, kernel, shape, c: np.ndarray) -> np.ndarray:
     return fields.displacement(kernel, c) - (shape.heights(c) - 1.0 + fields.penetration)
 
 
+#: :func:`bounded_weights` of the meshes alive (a mesh is immutable; compared by identity)
+_WEIGHTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def bounded_weights(mesh) -> np.ndarray:
+    """``intensity_matrix(mesh, BOUNDED_POWERS)`` (read-only), computed once per mesh: the zone
+    iteration, the residual and the edge terms of one evaluation all fit on the same mesh."""
+    w = _WEIGHTS.get(mesh)
+    if w is None:
+        w = intensity_matrix(mesh, BOUNDED_POWERS)
+        w.flags.writeable = False
+        _WEIGHTS[mesh] = w
+    return w
+
+
 def intensity(fields: FieldSolution) -> np.ndarray:
     """``K̃`` at every edge of a contact stress that tends to a constant there (the zone's
     ``σ̃0`` once the zone is resolved, 0 without a zone): the fit of
     :func:`~viscocontact.contact.fields.stress_intensity` with a constant added
     (:data:`~viscocontact.contact.fields.BOUNDED_POWERS`), so that it is continuous in the zone
     length down to zero. Uncalibrated: only its root and sign matter."""
-    return intensity_matrix(fields.mesh, BOUNDED_POWERS) @ fields.sigma
+    return bounded_weights(fields.mesh) @ fields.sigma
 
 
 def _kernel_slopes(kernel, x):
@@ -159,7 +175,7 @@ def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control:
         if unit is None:
             unit = lu_solve(fields.lu, np.ones_like(h), check_finite=False)
         ds += np.outer(unit, (-(h @ ds) - stress) / (h @ unit))
-    w = intensity_matrix(mesh, BOUNDED_POWERS) if weights is None else weights
+    w = bounded_weights(mesh) if weights is None else weights
     return w @ ds
 
 
@@ -223,7 +239,7 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
     space = room(edges)
     free = ROOM * space
     facing = partner(n)
-    weights = intensity_matrix(base.mesh, BOUNDED_POWERS)
+    weights = bounded_weights(base.mesh)
 
     def evaluate(t):
         f = with_loads(base, kernel, zone_loads(edges, t * t, stress), **control)
