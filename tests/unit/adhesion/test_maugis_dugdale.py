@@ -10,8 +10,8 @@ from hypothesis import strategies as st
 
 from viscocontact import _registry
 from viscocontact.adhesion import AdhesionModel, MaugisDugdale
-from viscocontact.contact.cohesive import (intensity, intensity_jacobian, room, tips,
-                                           zone_fields, zone_loads)
+from viscocontact.contact.cohesive import (bounded_weights, intensity, intensity_jacobian, room,
+                                           tips, zone_fields, zone_loads)
 from viscocontact.contact.fields import (BOUNDED_POWERS, NormalizedProfile, intensity_matrix,
                                          solve_fields, stress_intensity, with_loads)
 from viscocontact.contact.mesh import MeshSpec, build_mesh
@@ -218,3 +218,16 @@ def test_intensity_jacobian_equals_central_differences(d, zeta, load, zones):
         fd[:, col] = (4 * central(j, h / 2) - central(j, h)) / 3
     scale = np.max(np.abs(fd), axis=0)
     assert np.all(np.abs(J - fd) <= 1e-5 * scale), (J, fd)
+
+
+def test_the_fit_rows_are_computed_once_per_mesh():
+    """The zone iteration, the residual and the edge terms fit on one mesh: its rows are kept
+    (the same array, read-only, equal to a fresh computation) and a new mesh gets its own."""
+    mesh = build_mesh(np.array([-1.0, 1.0]), MeshSpec(elements=64, smallest=1e-4))
+    w = bounded_weights(mesh)
+    assert bounded_weights(mesh) is w
+    assert not w.flags.writeable
+    assert np.array_equal(w, intensity_matrix(mesh, BOUNDED_POWERS))
+    other = build_mesh(np.array([-1.0, 1.1]), MeshSpec(elements=64, smallest=1e-4))
+    assert bounded_weights(other) is not w
+
