@@ -54,7 +54,7 @@ GAP_MARGIN = 1e-3
 #: Weight of the free fraction of a neck in the residual of zones about to fill it
 #: (:meth:`MaugisDugdale.residuals`).
 SLACK = 10.0
-#: Points across a filled neck at which its largest gap is sought.
+#: Points across a neck at which its gap is sampled (:meth:`MaugisDugdale._reclassified`).
 NECK_POINTS = 48
 
 
@@ -188,29 +188,31 @@ class MaugisDugdale(AdhesionModel):
         (``g̃/η ≈ (K_app/K_c)²`` for a short zone), continued by the compressive ``K̃`` of an edge
         without a zone; increasing as the edge moves out.
 
-        A neck filled by its two zones (:func:`~viscocontact.contact.cohesive.filled`) has no
-        tips: its edges' residual is their ``K̃``, plus ``K̃_c(√(g̃_max/η) - 1)`` where the
-        largest gap in the neck exceeds the range (the traction would stop there: no filled
-        equilibrium). Zones about to fill their neck take ``max(tip condition, -S K̃_c s)`` with
-        ``s`` the free fraction of the neck (:data:`SLACK`), which tends to the filled neck's
-        residual where the zones meet, so that the residual is continuous across the switch
-        (both vanish there only if the gap where they meet is below the range)."""
+        A neck filled by its two zones (:func:`~viscocontact.contact.cohesive.filled`; only
+        where its gap stays within the range, :meth:`field_solution`) has no tips: its edges'
+        residual is their ``K̃``. Zones about to fill their neck take
+        ``max(tip condition, -S K̃_c s)`` with ``s`` the free fraction of the neck
+        (:data:`SLACK`), which tends to the filled neck's residual where the zones meet, so that
+        the residual is continuous across the switch (both vanish there only if the gap where
+        they meet is below the range)."""
         if self.gamma == 0:
             return ctx.stress_intensity()
+        e = self._edge_state(ctx)
+        r = np.where(e.zone, np.maximum(e.tip, -SLACK * e.kc * e.slack),
+                     e.tip + np.minimum(e.k, 0.0))
+        return np.where(e.full, e.k, r)
+
+    def _edge_state(self, ctx) -> "_EdgeState":
+        """What :meth:`residuals` and :meth:`residual_derivatives` both need of every edge."""
         f = ctx.fields
-        d = np.asarray(f.loads.width, dtype=float)
         edges = f.mesh.edges
-        kc = self.critical_intensity(ctx.amplitude)
+        d = zone_widths(f)
         g = self.tip_gaps(ctx)
-        k = self.intensity(ctx)
-        tip = kc * (np.sqrt(np.maximum(g, 0.0)) - 1.0)
-        slack = 1.0 - (d + d[partner(len(d))]) / room(edges)
-        r = np.where(d > 0, np.maximum(tip, -SLACK * kc * slack), tip + np.minimum(k, 0.0))
-        full = filled(edges, d)
-        if np.any(full):
-            over = kc * np.maximum(np.sqrt(np.maximum(self.neck_gaps(ctx), 0.0)) - 1.0, 0.0)
-            r = np.where(full, k + over, r)
-        return r
+        kc = self.critical_intensity(ctx.amplitude)
+        return _EdgeState(d=d, g=g, k=self.intensity(ctx), kc=kc, zone=d > 0,
+                          tip=kc * (np.sqrt(np.maximum(g, 0.0)) - 1.0),
+                          slack=1.0 - (d + d[partner(len(d))]) / room(edges),
+                          full=filled(edges, d))
 
     def _reclassified(self, fields, kernel, shape, necks=None) -> tuple[np.ndarray, np.ndarray]:
         """``(narrow, wide)``: the edges of open necks whose gap stays between 0 and the range
@@ -257,75 +259,36 @@ class MaugisDugdale(AdhesionModel):
         narrow[right[within]] = narrow[left[within]] = True
         return narrow, wide
 
-    def neck_gaps(self, ctx) -> np.ndarray:
-        """``g̃_max/η`` in the neck next to every edge whose neck is filled (0 elsewhere): the
-        largest gap of :data:`NECK_POINTS` points across the neck, refined by the parabola
-        through the largest and its neighbours."""
-        f = ctx.fields
-        edges = f.mesh.edges
-        d = np.asarray(f.loads.width, dtype=float)
-        full = filled(edges, d)
-        out = np.zeros(len(edges))
-        eta = self.opening(ctx.amplitude)
-        for i in np.flatnonzero(full & (np.arange(len(edges)) % 2 == 1)):
-            lo = edges[i]
-            hi = lo + room(edges)[i]
-            x = lo + (hi - lo) * np.arange(1, NECK_POINTS + 1) / (NECK_POINTS + 1)
-            gap = f.displacement(ctx.kernel, x) - (ctx.shape.heights(x) - 1.0 + f.penetration)
-            j = int(np.argmax(gap))
-            top = float(gap[j])
-            if 0 < j < len(x) - 1:
-                a, b, c = gap[j - 1], gap[j], gap[j + 1]
-                curv = a - 2 * b + c
-                if curv < 0:
-                    top = float(b - 0.125 * (c - a) ** 2 / curv)
-            out[i] = out[(i + 1) % len(edges)] = top / eta
-        return out
-
     def residual_derivatives(self, ctx, dfields) -> np.ndarray | None:
         """The derivatives of :meth:`residuals` in every edge and the penetration along the
         zones' own equations (:func:`~viscocontact.contact.cohesive.zone_derivatives`): at a
         zone ``K̃_c ġ/(2√(g̃ η))`` (or the slack term's, ``S K̃_c (ḋ_i + ḋ_j - (d_i + d_j)
         Ẇ/W)/W`` for a neck of room ``W``), at an edge without a zone its compressive ``K̃``'s,
-        at a filled neck its ``K̃``'s. None where a filled neck's gap exceeds the range (a point
-        the model rejects) or the zone lengths do not follow the edges."""
+        at a filled neck its ``K̃``'s. None where the zone lengths do not follow the edges."""
         if self.gamma == 0:
             return dfields.stress_intensity()
         z = self._zone_derivatives(ctx, dfields)
         if z is None:
             return None
-        f = ctx.fields
-        d = np.asarray(f.loads.width, dtype=float)
-        edges = f.mesh.edges
-        n = len(edges)
-        g = self.tip_gaps(ctx)
-        zone = d > 0
-        k = self.intensity(ctx)
-        kc = self.critical_intensity(ctx.amplitude)
+        e = self._edge_state(ctx)
+        n = len(e.d)
         eta = self.opening(ctx.amplitude)
-        root = np.sqrt(np.where(zone & (g > 0), g, 1.0))
-        rate = np.where(zone & (g > 0), kc / (2 * root * eta), 0.0)
-        out = np.where(zone[:, None], rate[:, None] * z.gaps,
-                       np.where((k < 0)[:, None], z.intensity, 0.0))
-        facing = partner(n)
-        space = room(edges)
-        slack = 1.0 - (d + d[facing]) / space
-        tip = kc * (np.sqrt(np.maximum(g, 0.0)) - 1.0)
-        bound = zone & (-SLACK * kc * slack > tip)
-        full = filled(edges, d)
-        if np.any(bound) or np.any(full):
+        root = np.sqrt(np.where(e.zone & (e.g > 0), e.g, 1.0))
+        rate = np.where(e.zone & (e.g > 0), e.kc / (2 * root * eta), 0.0)
+        out = np.where(e.zone[:, None], rate[:, None] * z.gaps,
+                       np.where((e.k < 0)[:, None], z.intensity, 0.0))
+        bound = e.zone & (-SLACK * e.kc * e.slack > e.tip)
+        if np.any(bound):
             # the room of each edge's neck, X_L - X_R, moves with its two edges
             right = np.where(np.arange(n) % 2 == 1, np.arange(n), (np.arange(n) - 1) % n)
             unit = np.eye(out.shape[1])
             d_room = unit[(right + 1) % n] - unit[right]
+            facing = partner(n)
+            space = room(ctx.fields.mesh.edges)
             d_slack = (-(z.lengths + z.lengths[facing]) / space[:, None]
-                       + ((d + d[facing]) / space**2)[:, None] * d_room)
-            out = np.where(bound[:, None], -SLACK * kc * d_slack, out)
-        if np.any(full):
-            if np.any(self.neck_gaps(ctx)[full] > 1.0):
-                return None
-            out = np.where(full[:, None], z.intensity, out)
-        return out
+                       + ((e.d + e.d[facing]) / space**2)[:, None] * d_room)
+            out = np.where(bound[:, None], -SLACK * e.kc * d_slack, out)
+        return np.where(e.full[:, None], z.intensity, out)
 
     def pressure_derivatives(self, ctx, dfields) -> np.ndarray | None:
         """``∂p̃∞`` with the zones' force, their lengths following the edges."""
@@ -396,3 +359,20 @@ class MaugisDugdale(AdhesionModel):
         stored = eff * target
         return EdgeTerms(stored=stored, nonconservative=target - stored, target=target,
                          effective_work=eff, stress_intensity=k, edge_perturbation=0.0)
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class _EdgeState:
+    """Per edge (:meth:`MaugisDugdale._edge_state`): zone lengths ``d``, tip gaps ``g`` (over
+    η), ``K̃``, the scale ``K̃_c``, which edges have a zone, the tip condition, the free
+    fraction of each neck and which necks are filled."""
+
+    d: np.ndarray
+    g: np.ndarray
+    k: np.ndarray
+    kc: float
+    zone: np.ndarray
+    tip: np.ndarray
+    slack: np.ndarray
+    full: np.ndarray
+

@@ -152,7 +152,7 @@ def _growth_stresses(fields: FieldSolution, kernel, stress: float, c: np.ndarray
 
 
 def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control: dict,
-                       columns: np.ndarray, weights: np.ndarray | None = None) -> np.ndarray:
+                       columns: np.ndarray) -> np.ndarray:
     """``∂K̃_i/∂d_j`` of :func:`intensity` at fixed edges, for the zones ``j`` in ``columns``.
 
     At fixed edges the field is linear in the zones' loads. A zone ``[X - d, X]`` (or
@@ -175,8 +175,7 @@ def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control:
         if unit is None:
             unit = lu_solve(fields.lu, np.ones_like(h), check_finite=False)
         ds += np.outer(unit, (-(h @ ds) - stress) / (h @ unit))
-    w = bounded_weights(mesh) if weights is None else weights
-    return w @ ds
+    return bounded_weights(mesh) @ ds
 
 
 def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
@@ -308,8 +307,8 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
             continue
         screened |= (t > 0.0) & (k < 0.0)
         idx = np.flatnonzero(active)
-        J = intensity_jacobian(fields, kernel, stress=stress, control=control, columns=idx,
-                               weights=weights)[idx] * (2.0 * t[idx])
+        J = intensity_jacobian(fields, kernel, stress=stress, control=control,
+                               columns=idx)[idx] * (2.0 * t[idx])
         beyond = np.diag(J) >= 0.0
         step = None
         if not np.any(beyond):
