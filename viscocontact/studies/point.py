@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import collections
 import json
+import math
 import threading
 import time
 from typing import Any, Iterable, Mapping
@@ -86,6 +87,12 @@ class PointSpec:
         ζ of intermediate equilibria to pass through, in order, before the point's own ζ (a
         continuation in bounded steps; they are solved, not recorded). A converged one hands its
         contact set on; one that does not converge is passed over.
+    origin : float or None
+        ζ of the converged neighbour the point is continued from (sweeps; None otherwise).
+    origin_edges : tuple of float
+        That neighbour's contact set, flattened. A point continued from it (``started_from``
+        ``"neighbour"``) that does not converge is approached again from it in smaller steps of
+        ζ (:func:`refined`); its message says so.
     """
 
     chain: int
@@ -96,6 +103,8 @@ class PointSpec:
     discretization: Mapping[str, Any] | None = None
     labels: Mapping[str, Any] = attrs.field(factory=dict)
     path: tuple = attrs.field(default=(), converter=_as_tuple)
+    origin: float | None = None
+    origin_edges: tuple = attrs.field(default=(), converter=_as_tuple)
 
 
 def solve_point(scene: Mapping[str, Any], spec: PointSpec,
@@ -167,23 +176,88 @@ def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
 
 
 def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
-    from ..problem import ContactProblem, Discretization
-    from ..scene import Scene
+    from ..problem import Discretization
 
     options = {}
     if spec.discretization:
         options["discretization"] = Discretization(**spec.discretization)
     start = None if initial is None else np.asarray(initial, dtype=float).reshape(-1)
+    origin, origin_start = spec.origin, (np.asarray(spec.origin_edges, dtype=float)
+                                         if spec.origin_edges else None)
     for zeta in spec.path:      # intermediate equilibria of a bounded continuation
-        at = {**scene, "sliding": {"zeta": float(zeta)}}
-        problem = ContactProblem.from_scene(Scene.from_dict(at), **options)
-        result = problem.solve(initial=start, prepared=_prepared(at, problem))
+        result = _solve_at(scene, zeta, start, options)
         if result.converged:
             # full contact has no edges to carry: the next step follows the approach path
             start = None if result.full_contact else np.asarray(result.edges, float).reshape(-1)
-    problem = ContactProblem.from_scene(Scene.from_dict(scene), **options)
-    prepared = _prepared(scene, problem)
-    return problem.solve(initial=start, fields=spec.fields, prepared=prepared)
+            origin, origin_start = float(zeta), start
+    result = _solve_at(scene, None, start, options, fields=spec.fields)
+    if (result.converged or spec.started_from != NEIGHBOUR or origin is None
+            or origin_start is None):
+        return result
+    return refined(scene, options, origin, origin_start, result, fields=spec.fields)
+
+
+def _solve_at(scene: Mapping[str, Any], zeta: float | None, start, options: dict, *,
+              fields: bool = False):
+    """The equilibrium of ``scene`` (at ``zeta`` instead of its own ζ when given) from ``start``."""
+    from ..problem import ContactProblem
+    from ..scene import Scene
+
+    at = scene if zeta is None else {**scene, "sliding": {"zeta": float(zeta)}}
+    problem = ContactProblem.from_scene(Scene.from_dict(at), **options)
+    return problem.solve(initial=start, fields=fields, prepared=_prepared(at, problem))
+
+
+#: Smallest step of :func:`refined`, as a fraction of the ζ gap in decades, and the most solves
+#: it makes.
+REFINE_SMALLEST = 1.0 / 64.0
+REFINE_SOLVES = 24
+
+
+def refined(scene: Mapping[str, Any], options: dict, origin: float, start: np.ndarray,
+            failed, *, fields: bool = False):
+    """A point that did not converge from its neighbour's contact set, approached again from the
+    neighbour (at ζ = ``origin``, contact set ``start``) in steps of log ζ: a step that
+    converges hands its contact set on and the next step doubles (up to the rest of the gap), one
+    that fails is halved, down to :data:`REFINE_SMALLEST` of the gap (at most
+    :data:`REFINE_SOLVES` solves). This is a slow change of speed over the gap instead of the
+    jump: an adhesive equilibrium depends on the history, so the message says which one the
+    point had. Returns the point's result (``failed``, with a longer message, when no step path
+    reaches it); ``function_evaluations`` and ``iterations`` count every solve.
+    """
+    target = float(scene["sliding"]["zeta"])
+    if not (origin > 0 and target > 0) or origin == target:
+        return failed
+    span = math.log(target / origin)
+    done, step, solves = 0.0, 0.5, 0
+    evaluations, iterations = failed.function_evaluations, failed.iterations
+    current: np.ndarray | None = start
+    result = failed
+    while solves < REFINE_SOLVES and step >= REFINE_SMALLEST:
+        to = min(done + step, 1.0)
+        last = to >= 1.0
+        result = _solve_at(scene, None if last else origin * math.exp(to * span), current,
+                           options, fields=fields and last)
+        solves += 1
+        evaluations += result.function_evaluations
+        iterations += result.iterations
+        if not result.converged:
+            step *= 0.5
+            continue
+        done = to
+        if last:
+            why = (f"{result.message}: reached from the neighbour at ζ = {origin:.6g} in "
+                   f"{solves} steps of ζ, the direct start having failed ({failed.message})")
+            return attrs.evolve(result, message=why, function_evaluations=evaluations,
+                                iterations=iterations)
+        current = (None if result.full_contact
+                   else np.asarray(result.edges, dtype=float).reshape(-1))
+        step = min(2.0 * step, 1.0 - done)
+    why = (f"{failed.message}; approached again from the neighbour at ζ = {origin:.6g} in "
+           f"steps of ζ down to {REFINE_SMALLEST:g} of the gap ({solves} solves), it did not "
+           f"converge either ({result.message})")
+    return attrs.evolve(failed, message=why, function_evaluations=evaluations,
+                        iterations=iterations)
 
 
 # kernel tables depend only on profile, rheology, kernel and ζ: a small cache keyed by exactly

@@ -12,7 +12,9 @@ the start. An adhesive rough contact has many equilibria at one ζ and load, and
 continued point lands on depends on the history: a slow change of speed (``zeta_step``: the gap
 to the next ζ crossed through unrecorded intermediate equilibria), an approach at that speed
 (``continuation=False``) and a single jump over decades of ζ (the default) can give different
-ones (``docs/figures.md``, "Which equilibrium").
+ones (``docs/figures.md``, "Which equilibrium"). A point that does not converge from its
+neighbour's contact set is approached again from the neighbour in steps of ζ that halve on
+failure (:func:`~viscocontact.studies.point.refined`; its message says so).
 The first point of a chain, a point after a full-contact neighbour (full contact has no edges to
 carry) and every point of a sweep with ``continuation=False`` follow the approach path from first
 touch instead. A chain (one variant, load and seed) is sequential; different chains are
@@ -31,7 +33,7 @@ from ..problem import Discretization
 from ..scene import Scene
 from .base import (Chain, Study, adhesion_gamma, check_scene, int_list, log_zetas, real_list,
                    scene_variant, secant_start, starting_point)
-from .point import PointSpec, has_contact
+from .point import NEIGHBOUR, PointSpec, carried_edges, has_contact
 
 __all__ = ["Sweep", "log_zetas", "zeta_path"]
 
@@ -242,8 +244,13 @@ class Sweep(Study):
             predicted = secant_start(records, "zeta", path[0] if path else chain.zetas[k],
                                      log=True)
             initial = initial if predicted is None else predicted
+        origin: dict[str, Any] = {}
+        if anchor is not None and started_from == NEIGHBOUR:
+            carried = carried_edges(anchor)
+            if carried is not None:
+                origin = dict(origin=float(anchor["zeta"]), origin_edges=carried.tolist())
         spec = PointSpec(chain=chain.index, step=k, phase="sweep", started_from=started_from,
-                         path=path,
+                         path=path, **origin,
                          fields=self.fields, labels=dict(chain.labels),
                          discretization=(None if self.discretization is None
                                          else attrs.asdict(self.discretization)))

@@ -195,3 +195,73 @@ def test_a_wide_gap_is_crossed_through_intermediate_equilibria(tmp_path, adhesiv
         assert data.points["converged"][row]
         assert data.points["area"][row] == pytest.approx(result.area, rel=1e-12, abs=0)
         assert np.allclose(data.points["edges"][row], result.edges.ravel(), rtol=0, atol=1e-12)
+
+
+def _refusing_far_steps(monkeypatch, decades):
+    """Make every solve of a study point fail whose ζ lies more than ``decades`` from the last
+    ζ solved successfully (or from the first one asked); returns the list of ``(ζ, converged)``
+    of the calls."""
+    from viscocontact.studies import point
+
+    real = point._solve_at
+    calls: list = []
+
+    def solve_at(scene, zeta, start, options, *, fields=False):
+        z = float(scene["sliding"]["zeta"] if zeta is None else zeta)
+        last = next((c for c, ok in reversed(calls) if ok), None)
+        far = last is not None and start is not None and abs(np.log10(z / last)) > decades
+        result = real(scene, zeta, start, options, fields=fields)
+        if far:
+            result = attrs.evolve(result, converged=False, message="too far")
+        calls.append((z, result.converged))
+        return result
+
+    monkeypatch.setattr(point, "_solve_at", solve_at)
+    return calls
+
+
+def test_a_point_that_fails_from_its_neighbour_is_approached_in_smaller_steps(
+        tmp_path, adhesive, mesh, monkeypatch):
+    """Solves that jump more than 0.6 decades fail: the point at ζ = 1e-2 after ζ = 1 is
+    reached by steps that halve on failure and double on success, and it is the equilibrium of
+    a hand-written continuation through the ζ that converged (not stored)."""
+    calls = _refusing_far_steps(monkeypatch, 0.6)
+    data = run(Sweep(scene=adhesive, zetas=[1.0, 1e-2], discretization=mesh, pair=False),
+               tmp_path / "s.h5", progress=None)
+    assert data.points["converged"].tolist() == [True, True]
+    message = data.points["message"][1]
+    assert "reached from the neighbour at ζ = 1 in" in message and "too far" in message
+    path = [z for z, ok in calls[2:] if ok]          # after the first point and the direct try
+    assert path[-1] == 1e-2 and len(path) >= 4
+    assert all(abs(np.log10(b / a)) <= 0.6 + 1e-12 for a, b in zip([1.0] + path, path))
+    previous, evaluations = None, 0
+    with single_blas_thread():
+        for zeta in [1.0, *path]:
+            problem = ContactProblem.from_scene(attrs.evolve(adhesive, zeta=zeta),
+                                                discretization=Discretization(**mesh))
+            result = problem.solve(initial=previous)
+            assert result.converged
+            previous = result
+            evaluations += result.function_evaluations
+    assert data.points["area"][1] == pytest.approx(result.area, rel=1e-12, abs=0)
+    assert np.allclose(data.points["edges"][1], result.edges.ravel(), rtol=0, atol=1e-12)
+    # the count covers the failed tries too
+    assert data.points["function_evaluations"][1] > evaluations - data.points[
+        "function_evaluations"][0]
+
+
+def test_a_point_that_no_step_reaches_stays_failed_and_says_so(tmp_path, adhesive, mesh,
+                                                                monkeypatch):
+    from viscocontact.studies.point import REFINE_SMALLEST, REFINE_SOLVES
+
+    calls = _refusing_far_steps(monkeypatch, 0.0)
+    data = run(Sweep(scene=adhesive, zetas=[1.0, 1e-2], discretization=mesh, pair=False),
+               tmp_path / "s.h5", progress=None)
+    assert data.points["converged"].tolist() == [True, False]
+    message = data.points["message"][1]
+    assert message.startswith("too far; approached again from the neighbour at ζ = 1")
+    assert "did not converge either" in message
+    tries = calls[2:]
+    assert not any(ok for _, ok in tries) and 1 <= len(tries) <= REFINE_SOLVES
+    # the steps halve down to the smallest
+    assert min(abs(np.log10(z)) for z, _ in tries) == pytest.approx(2 * REFINE_SMALLEST)
