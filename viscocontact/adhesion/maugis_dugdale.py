@@ -43,8 +43,8 @@ import attrs
 import numpy as np
 
 from .._validation import in_range
-from ..contact.cohesive import (ZoneError, filled, intensity, partner, room, tips,
-                                zone_derivatives, zone_fields, zone_widths)
+from ..contact.cohesive import (ZoneError, filled, intensity, neck_ends, partner, room,
+                                tips, zone_derivatives, zone_fields, zone_widths)
 from .base import AdhesionLimitation, AdhesionModel, EdgeTerms
 
 #: Resolved length of the edge mesh as a fraction of the quasi-static zone ``h̃0²/(4γ̃)``.
@@ -280,9 +280,9 @@ class MaugisDugdale(AdhesionModel):
         bound = e.zone & (-SLACK * e.kc * e.slack > e.tip)
         if np.any(bound):
             # the room of each edge's neck, X_L - X_R, moves with its two edges
-            right = np.where(np.arange(n) % 2 == 1, np.arange(n), (np.arange(n) - 1) % n)
+            right, left = neck_ends(n)
             unit = np.eye(out.shape[1])
-            d_room = unit[(right + 1) % n] - unit[right]
+            d_room = unit[left] - unit[right]
             facing = partner(n)
             space = room(ctx.fields.mesh.edges)
             d_slack = (-(z.lengths + z.lengths[facing]) / space[:, None]

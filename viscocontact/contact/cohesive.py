@@ -106,6 +106,15 @@ def partner(n: int) -> np.ndarray:
     return np.where(idx % 2 == 1, (idx + 1) % n, (idx - 1) % n)
 
 
+def neck_ends(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """``(R, L)``: for each edge, the right edge ``R`` and the left edge ``L`` of the neck beside
+    it (``X_R`` ends one contact, ``X_L`` begins the next, periodic), whose room is
+    ``X_L - X_R`` (:func:`room`)."""
+    idx = np.arange(n)
+    right = np.where(idx % 2 == 1, idx, (idx - 1) % n)
+    return right, (right + 1) % n
+
+
 def tip_gaps(fields: FieldSolution, kernel, shape, c: np.ndarray) -> np.ndarray:
     """``g̃(c_i)`` of a field with its zones."""
     return fields.displacement(kernel, c) - (shape.heights(c) - 1.0 + fields.penetration)
@@ -503,8 +512,8 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDe
     dd = np.zeros((m, n_dirs))
     if np.any(full):
         space = room(mesh.edges)[act]
-        right = np.where(act % 2 == 1, act, (act - 1) % n)
-        left = (right + 1) % n
+        right, left = neck_ends(n)
+        right, left = right[act], left[act]
         dd[full] = (d[act][full] / space[full])[:, None] * (
             np.eye(n_dirs)[left[full]] - np.eye(n_dirs)[right[full]])
     free = ~full
