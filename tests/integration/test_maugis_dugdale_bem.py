@@ -400,3 +400,23 @@ def test_a_rough_merged_contact_never_passes_with_tension_beyond_the_cohesive_st
     grid = Spectral().solve(prob)
     assert grid.converged and grid.n_contacts == 5 and grid.residual <= 1e-8
     assert grid.area == pytest.approx(0.26386, rel=1e-3)
+
+
+def test_a_rough_approach_that_ends_below_the_target_load_reaches_it_in_steps_of_load():
+    """The thesis rough profile with 5 nm zones, seed 14, p̃∞ = 0.6, ζ = 1e4 (the one point of the
+    twenty-realization 5 nm set that failed from first touch): the approach branch ends at
+    Δ̃ = 0.176 below the target load, and the load-controlled solve from its last state found
+    zones that meet across a gap beyond the range. Raised in steps of load (half the way, then
+    the rest), it converges with four contacts."""
+    import attrs
+
+    prob = _rough_md_range(5.0)
+    prob = attrs.evolve(prob, profile=attrs.evolve(prob.profile, seed=14), zeta=1e4,
+                        mean_pressure=0.6)
+    r = prob.solve()
+    assert r.converged, r.message
+    events = " ".join(r.extras["events"])
+    assert "the approach branch ends at penetration 0.176" in events
+    assert "the target load reached from there in 2 steps of load" in events
+    assert r.mean_pressure == pytest.approx(0.6, abs=1e-9) and r.min_gap > 0
+    assert r.n_contacts == 4 and r.area == pytest.approx(0.43468, rel=1e-4)

@@ -34,6 +34,10 @@ APPROACH_PROBATION = 4
 #: another path, where a contact had to be refined (2103 evaluations instead of 962, Ã 3e-7 off
 #: Broyden's; ``tests/integration/test_rough.py``).
 CEILING_GROWTH = 1.25
+#: Smallest step of :meth:`Path.in_load_steps`, as a fraction of the way to the target load,
+#: and the most solves it makes.
+LOAD_STEP_SMALLEST = 1.0 / 64.0
+LOAD_STEP_SOLVES = 24
 #: Largest correction of a predicted edge, relative to its contact's half-width, that the step
 #: control aims at (:meth:`Path.next_step`).
 PREDICTOR_ERROR = 0.02
@@ -217,7 +221,8 @@ class Path:
                               "target load; solved in load control from there")
                     final = eq.solve(state.edges, target)
                     if final.outcome is Outcome.NOT_CONVERGED:
-                        return self.closed_past_peak(peak, state, target) or final
+                        return (self.closed_past_peak(peak, state, target)
+                                or self.in_load_steps(state, target) or final)
                     return final
                 if jump is None:
                     return trial
@@ -231,6 +236,38 @@ class Path:
             if eq.adhesive:
                 ceiling = step
             log.event(f"approach step halved to {step:.3g}")
+
+    def in_load_steps(self, state: State, target: Control) -> State | None:
+        """The equilibrium at the target load reached from ``state`` in steps of load, or None.
+
+        Where the approach branch ends below the target load and the solve at the target from
+        its last state fails, the load is raised from the last state's towards the target: a
+        step that converges hands its contact set on and the next one doubles (up to the rest
+        of the way), one that fails is halved, down to :data:`LOAD_STEP_SMALLEST` of the way
+        (at most :data:`LOAD_STEP_SOLVES` solves). Full contact on the way is the answer if the
+        closed interface holds the target (:meth:`ClosedContact.supports`).
+        """
+        eq = self.eq
+        if state.fields is None:
+            return None
+        start = float(state.fields.mean_pressure)
+        done, step, solves, current = 0.0, 0.5, 0, state
+        while solves < LOAD_STEP_SOLVES and step >= LOAD_STEP_SMALLEST:
+            to = min(done + step, 1.0)
+            trial = eq.solve(current.edges, Control.load_of(start + to * (target.value - start)))
+            solves += 1
+            if trial.outcome is Outcome.FULL_CONTACT:
+                return trial if self.closed.supports(target.value) else None
+            if trial.outcome is not Outcome.CONVERGED:
+                step *= 0.5
+                continue
+            if to >= 1.0:
+                self.log.event(f"the target load reached from there in {solves} steps of load")
+                return trial
+            done, current, step = to, trial, min(2.0 * step, 1.0 - to)
+        self.log.event(f"no steps of load from p̃∞ = {start:.6g} reach the target ({solves} "
+                       "solves)")
+        return None
 
     def closed_past_peak(self, peak: tuple[float, float], end: State,
                          target: Control) -> State | None:
