@@ -30,7 +30,10 @@ Contract for implementers
    treats the point as invalid (a solver steps back) and reports the reason if the solve fails.
 6. Optionally, :meth:`gap_violation` returns a message when the gap outside the contacts (and
    outside the model's own loads) breaks the model's assumptions at an equilibrium; the
-   orchestrator then reports the solve as not converged with that message.
+   orchestrator then reports the solve as not converged with that message. Before that,
+   :meth:`snap_in` may name regions where the interface jumps into contact although the
+   profile does not penetrate (a finite-range law whose traction would act there): the
+   orchestrator gives birth to contacts there, as where the profile penetrates.
 7. Optionally, :meth:`closed_strength` bounds the tension a closed (full-contact) interface
    carries (default: unbounded with adhesion, 0 without); a finite-range law returns its
    strength, and full contact with a larger tension is not an equilibrium.
@@ -146,6 +149,12 @@ class AdhesionModel(abc.ABC):
         """A message when the gap ``gap`` at points ``x`` outside the contacts breaks the model at
         an equilibrium (contract item 6); None when it does not."""
         return None
+
+    def snap_in(self, x, gap, fields) -> list[tuple[float, float, float]]:
+        """Regions ``(a, b, depth)`` of the points ``x`` outside the contacts (gap ``gap``)
+        where a contact is born although the profile does not penetrate (contract item 6);
+        none by default."""
+        return []
 
     @abc.abstractmethod
     def edge_terms(self, ctx) -> EdgeTerms:

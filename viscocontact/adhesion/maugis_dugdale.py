@@ -315,18 +315,42 @@ class MaugisDugdale(AdhesionModel):
         loads = ctx.fields.loads
         return np.zeros(ctx.n_edges) if loads is None else np.array(loads.width)
 
-    def gap_violation(self, x, gap, fields) -> str | None:
+    def snap_in(self, x, gap, fields) -> list[tuple[float, float, float]]:
+        """Where the gap outside the zones falls below the range: the interface jumps into
+        contact there (the regions, with the gap less the range as ``depth``).
+
+        Inside the range the cohesive traction would act without a contact edge (tension without
+        contact), which the BEM does not model. Under a uniform traction a peak that comes
+        within the range is pulled towards the solid; for a JKR-like interface (Maugis's λ well
+        above 1: about 100 at 5 nm on the thesis's rough profile) that pull is unstable and the
+        peak jumps into contact (Maugis 1992's jump-in), so the BEM gives birth to a contact
+        there. Where a patch of traction without contact is stable (DMT-like, λ ≲ 1), that is a
+        different equilibrium from the one the spectral method's grid finds
+        (``docs/cohesive.md``)."""
+        from ..contact.topology import negative_regions
+
+        low = self._below_range(x, gap, fields)
+        if low is None or not np.any(low):
+            return []
+        eta = self._eta_of(fields)
+        return negative_regions(x, np.where(low, gap - eta, eta), 0.0)
+
+    def _below_range(self, x, gap, fields) -> np.ndarray | None:
+        """Which points ``x`` outside the zones have a gap below ``(1 - GAP_MARGIN)·η``."""
         loads = fields.loads
         if self.gamma == 0 or loads is None or len(x) == 0:
             return None
-        eta = self._eta_of(fields)
         keep = np.ones(len(x), bool)
         for lo, hi in zip(loads.left, loads.right):
             for shift in (-2 * np.pi, 0.0, 2 * np.pi):
                 keep &= ~((x + shift >= lo - 1e-9) & (x + shift <= hi + 1e-9))
-        low = keep & (gap < (1.0 - GAP_MARGIN) * eta)
-        if not np.any(low):
+        return keep & (gap < (1.0 - GAP_MARGIN) * self._eta_of(fields))
+
+    def gap_violation(self, x, gap, fields) -> str | None:
+        low = self._below_range(x, gap, fields)
+        if low is None or not np.any(low):
             return None
+        eta = self._eta_of(fields)
         where = x[low]
         return (f"the gap falls below the range h0 outside the cohesive zones (at {low.sum()} "
                 f"check point(s), x̃ from {where.min():.4g} to {where.max():.4g}; smallest gap "

@@ -231,3 +231,33 @@ def test_the_fit_rows_are_computed_once_per_mesh():
     other = build_mesh(np.array([-1.0, 1.1]), MeshSpec(elements=64, smallest=1e-4))
     assert bounded_weights(other) is not w
 
+
+
+def test_a_gap_below_the_range_outside_the_zones_snaps_into_contact():
+    """η = 0.1 (h̃0 = 1e-2, Λ̃ = 0.1); zones [0.9, 1] and [2, 2.1]. A dip of the gap to 0.05
+    inside a zone is the zone's business; one outside, across [3.9, 4.1], is born as a contact
+    where the gap is below η (its ends interpolated between the samples). Models of vanishing
+    range have no such regions."""
+    from types import SimpleNamespace
+
+    from viscocontact.adhesion import EnergyBalance, NoAdhesion
+    from viscocontact.contact.cohesive import zone_loads
+
+    m = MaugisDugdale(gamma=1e-4, range=1e-2)
+    fields = SimpleNamespace(loads=zone_loads(np.array([1.0, 2.0]), np.array([0.1, 0.1]),
+                                              m.strength(0.1)))
+    x = np.linspace(0.0, 2 * np.pi, 629)[:-1]
+    gap = np.full_like(x, 0.2)
+    gap[np.abs(x - 0.95) < 0.04] = 0.05
+    dip = np.abs(x - 4.0) <= 0.1 + 1e-12
+    gap[dip] = 0.05
+    regions = m.snap_in(x, gap, fields)
+    assert len(regions) == 1
+    a, b, depth = regions[0]
+    first, last = np.flatnonzero(dip)[[0, -1]]
+    assert x[first - 1] < a < x[first] and x[last] < b < x[last + 1]
+    assert depth == pytest.approx(0.05 - 0.1)
+    assert "below the range h0" in m.gap_violation(x, gap, fields)
+    assert m.snap_in(x, np.full_like(x, 0.2), fields) == []
+    for other in (EnergyBalance(gamma=5e-4), NoAdhesion(), MaugisDugdale(gamma=0.0, range=1e-2)):
+        assert other.snap_in(x, gap, fields) == []

@@ -247,3 +247,49 @@ def test_a_closed_interface_holds_while_its_tension_is_within_its_strength(stren
     assert closed.largest_tension(load) == pytest.approx(1.0 - load, abs=1e-12)
     assert closed.supports(load) is holds
     assert closed.holds(Control.load_of(load)) is holds
+
+
+def _load_steps_solve(monkeypatch, reach):
+    """A solve of :data:`WAVY` whose equilibrium solves fail when asked for a load more than
+    ``reach`` from the last load they reached; returns it and the converged state at p̃∞ = 0.02."""
+    solve = Solve(WAVY, WAVY.prepare())
+    state = solve.path.approach(Control.load_of(0.02))
+    assert state.outcome is Outcome.CONVERGED
+    real = solve.equilibrium.solve
+    last = [0.02]
+
+    def solve_within_reach(edges, control, **kwargs):
+        if abs(control.value - last[0]) > reach:
+            return attrs.evolve(state, outcome=Outcome.NOT_CONVERGED, message="too far")
+        out = real(edges, control, **kwargs)
+        if out.outcome is Outcome.CONVERGED:
+            last[0] = control.value
+        return out
+
+    monkeypatch.setattr(solve.equilibrium, "solve", solve_within_reach)
+    return solve, state, real
+
+
+def test_load_steps_halve_until_they_reach_the_target_load(monkeypatch):
+    """From p̃∞ = 0.02 to 0.1 with solves that fail beyond 0.03 of the last load reached: the
+    steps go 0.06 (fails), 0.04, 0.08 (fails), 0.06, 0.1 (fails), 0.08, 0.1; the state is the
+    equilibrium a direct solve from there reaches (edges to the solves' tolerance: residuals
+    of 1e-8 move them by 1e-7)."""
+    solve, state, real = _load_steps_solve(monkeypatch, 0.03)
+    out = solve.path.in_load_steps(state, Control.load_of(0.1))
+    assert out is not None and out.outcome is Outcome.CONVERGED
+    assert out.fields.mean_pressure == pytest.approx(0.1, abs=1e-10)
+    assert "the target load reached from there in 7 steps of load" in solve.log.events
+    direct = real(out.edges, Control.load_of(0.1))
+    assert np.allclose(direct.edges, out.edges, rtol=0, atol=1e-6)
+
+
+def test_load_steps_that_never_converge_give_up(monkeypatch):
+    from viscocontact.methods.bem.path import LOAD_STEP_SMALLEST, LOAD_STEP_SOLVES
+
+    solve, state, _ = _load_steps_solve(monkeypatch, 0.0)
+    assert solve.path.in_load_steps(state, Control.load_of(0.1)) is None
+    solves = int(np.log2(0.5 / LOAD_STEP_SMALLEST)) + 1
+    assert solves <= LOAD_STEP_SOLVES
+    assert solve.log.events[-1] == (f"no steps of load from p̃∞ = 0.02 reach the target "
+                                    f"({solves} solves)")

@@ -207,6 +207,10 @@ class Equilibrium:
             # makes of the gap elsewhere (Maugis-Dugdale: a gap below the range outside its zones,
             # which a penetrating asperity also has around it)
             regions = self.checks.births(fields, (xs, gap))
+            snapped = False
+            if not regions:     # (a finite-range law: a peak within the range jumps in)
+                regions = self.adhesion.snap_in(xs, gap, fields)
+                snapped = bool(regions)
             violation = None if regions else self.adhesion.gap_violation(xs, gap, fields)
             if violation is not None:
                 return not_converged(violation)
@@ -222,7 +226,8 @@ class Equilibrium:
                 converged_before_births.append(x.copy())
                 new = [v for (a, b, _) in regions for v in (a, b)]
                 merged, _, _, full = repair(np.concatenate([x, new]), MIN_WIDTH, MIN_GAP)
-                log.event(f"{len(regions)} contact(s) born")
+                log.event(f"{len(regions)} contact(s) born" + (
+                    " where the gap fell below the cohesive range" if snapped else ""))
                 if full:
                     return State.full_contact()
                 if self.adhesive:
