@@ -401,22 +401,29 @@ def test_a_rough_merged_contact_never_passes_with_tension_beyond_the_cohesive_st
     assert r.n_contacts == 5 and r.area == pytest.approx(grid.area, rel=2e-4)
 
 
+def _snapped_in(h0_nm: float, *, seed: int, zeta: float, load: float):
+    """``(problem, result)`` of the rough point from first touch, asserted converged with a peak
+    snapped into contact on the way."""
+    import attrs
+
+    prob = _rough_md_range(h0_nm)
+    prob = attrs.evolve(prob, profile=attrs.evolve(prob.profile, seed=seed), zeta=zeta,
+                        mean_pressure=load)
+    r = prob.solve()
+    assert r.converged, r.message
+    assert "where the gap fell below the cohesive range" in " ".join(r.extras["events"])
+    return prob, r
+
+
 def test_a_peak_within_the_range_snaps_into_contact_as_on_the_grid():
     """The thesis rough profile with 100 nm zones (seed 2, p̃∞ = 0.1, ζ = 1; Maugis's λ ≈ 5): the
     approach stopped where a peak came within the range without touching (traction without a
     contact edge, which the BEM does not model). The peak now jumps into contact, and the
     equilibrium is the one of the spectral method's grid, which models traction without
     contact: one contact, Ã and μ to the BEM's edge-zone offset (1e-4)."""
-    import attrs
-
     from viscocontact.methods.spectral import Spectral
 
-    prob = _rough_md_range(100.0)
-    prob = attrs.evolve(prob, profile=attrs.evolve(prob.profile, seed=2), zeta=1.0,
-                        mean_pressure=0.1)
-    r = prob.solve()
-    assert r.converged, r.message
-    assert "where the gap fell below the cohesive range" in " ".join(r.extras["events"])
+    prob, r = _snapped_in(100.0, seed=2, zeta=1.0, load=0.1)
     grid = Spectral().solve(prob)
     assert grid.converged and r.n_contacts == grid.n_contacts == 1
     assert r.area == pytest.approx(grid.area, rel=2e-4)
@@ -431,13 +438,6 @@ def test_the_one_first_touch_failure_of_the_5nm_set_converges():
     (:meth:`Path.in_load_steps`) it converged with four contacts, Ã = 0.434684; now a peak that
     comes within the range snaps into contact on the way, and the approach reaches the same
     equilibrium without the steps."""
-    import attrs
-
-    prob = _rough_md_range(5.0)
-    prob = attrs.evolve(prob, profile=attrs.evolve(prob.profile, seed=14), zeta=1e4,
-                        mean_pressure=0.6)
-    r = prob.solve()
-    assert r.converged, r.message
-    assert "where the gap fell below the cohesive range" in " ".join(r.extras["events"])
+    _, r = _snapped_in(5.0, seed=14, zeta=1e4, load=0.6)
     assert r.mean_pressure == pytest.approx(0.6, abs=1e-9) and r.min_gap > 0
     assert r.n_contacts == 4 and r.area == pytest.approx(0.434684, rel=1e-5)
