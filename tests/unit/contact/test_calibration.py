@@ -25,11 +25,37 @@ def test_the_default_meshes_are_shipped():
             assert (n, float(disc.clustering), float(disc.grading), zones) in TABLES
 
 
+def _conditions(key) -> np.ndarray:
+    """cond(B) of the influence matrix behind each entry of the table ``key``."""
+    from viscocontact.contact.mesh import MeshSpec, build_mesh
+    from viscocontact.kernels.half_plane import HalfPlane
+    from viscocontact.rheology.elastic import Elastic
+
+    elements, exponent, grading, zones = key
+    pk = HalfPlane().prepare(Elastic(), 0.0)
+
+    def cond(a, smallest=None):
+        mesh = build_mesh(np.array([-a, a]), MeshSpec(elements=elements, exponent=exponent,
+                                                      grading=grading, smallest=smallest))
+        return np.linalg.cond(pk.influence(mesh.mid, mesh.left, mesh.right))
+
+    if not zones:
+        return np.array([cond(a) for a in calibration._CAL_ALPHA])
+    return np.array([[cond(a, rel * a) for rel in calibration._CAL_REL]
+                     for a in calibration._CAL_ALPHA])
+
+
 @pytest.mark.parametrize("zones", [False, True])
 def test_a_shipped_table_is_what_the_module_computes(zones):
+    """Each entry solves ``B σ = 1`` on a mesh whose edge elements reach 1e-9 of the
+    half-width with zones (cond(B) up to 8.5e9), so the table is reproducible to the round-off
+    of that solve, ``cond(B)·ε`` per entry, not to a fixed 1e-12: the shipped table and one
+    computed with the numpy 2.4.6 wheels differ by up to 6.9e-8 at the smallest elements,
+    0.21 cond(B)·ε (without zones, cond(B) up to 1.1e4: 5e-14)."""
     key = (64, 1.0, 1.15, zones)
     computed = calibration.calibration_ratios(*key)
-    assert np.max(np.abs(computed - np.array(TABLES[key]))) < 1e-12
+    bound = _conditions(key) * np.finfo(float).eps
+    assert np.all(np.abs(computed - np.array(TABLES[key])) <= bound)
 
 
 def test_another_mesh_type_is_computed(monkeypatch):
