@@ -218,8 +218,9 @@ class Equilibrium:
                                for y in converged_before_births):
                 # the same equilibrium again: the contacts born from it last time vanished
                 # (detached or turned inside out) and would be born again, endlessly
+                where = ("below the cohesive range" if snapped else "negative")
                 return not_converged(
-                    "contact set cycles: contacts born where the gap is negative on the check "
+                    f"contact set cycles: contacts born where the gap is {where} on the check "
                     f"grid ({len(regions)} region(s)) detach again; a finer check grid "
                     "(Discretization.check_points) or mesh may settle it")
             if regions:
