@@ -33,9 +33,10 @@ equilibrium is bounded stress at both (:meth:`field_solution`, :meth:`residuals`
 neck whose gap exceeds the range somewhere is not admissible; zones that would meet across such
 a neck have no lengths for these edges (a point the solver steps back from).
 
-Limitations (reported, never passed as converged): a gap that falls below the range outside
-every zone and contact (the law would act there too, without a contact edge: tension without
-contact) — :meth:`gap_violation`.
+Tension without contact. A gap that falls below the range outside every zone and contact (the
+law would act there without a contact edge) snaps the peak into contact (:meth:`snap_in`, the
+jump-in of a JKR-like interface); a stable patch of traction without contact (DMT-like) is not
+modelled in the BEM. :meth:`gap_violation` reports such a gap where no contact is born.
 """
 from __future__ import annotations
 
