@@ -22,6 +22,7 @@ from typing import Any, Iterable, Mapping
 import attrs
 import numpy as np
 
+from .._stepping import march
 from ..errors import TimeLimitExceeded
 
 #: Record columns written for every point: name -> kind (``int``, ``float``, ``bool``, ``str`` or
@@ -229,35 +230,31 @@ def refined(scene: Mapping[str, Any], options: dict, origin: float, start: np.nd
     if not (origin > 0 and target > 0) or origin == target:
         return failed
     span = math.log(target / origin)
-    done, step, solves = 0.0, 0.5, 0
-    evaluations, iterations = failed.function_evaluations, failed.iterations
     current: np.ndarray | None = start
-    result = failed
-    while solves < REFINE_SOLVES and step >= REFINE_SMALLEST:
-        to = min(done + step, 1.0)
+    result, evaluations, iterations = failed, failed.function_evaluations, failed.iterations
+
+    def attempt(to: float) -> bool:
+        nonlocal current, result, evaluations, iterations
         last = to >= 1.0
         result = _solve_at(scene, None if last else origin * math.exp(to * span), current,
                            options, fields=fields and last)
-        solves += 1
         evaluations += result.function_evaluations
         iterations += result.iterations
-        if not result.converged:
-            step *= 0.5
-            continue
-        done = to
-        if last:
-            why = (f"{result.message}: reached from the neighbour at ζ = {origin:.6g} in "
-                   f"{solves} steps of ζ, the direct start having failed ({failed.message})")
-            return attrs.evolve(result, message=why, function_evaluations=evaluations,
-                                iterations=iterations)
-        current = (None if result.full_contact
-                   else np.asarray(result.edges, dtype=float).reshape(-1))
-        step = min(2.0 * step, 1.0 - done)
+        if result.converged and not last:
+            current = (None if result.full_contact
+                       else np.asarray(result.edges, dtype=float).reshape(-1))
+        return bool(result.converged)
+
+    reached, solves = march(attempt, smallest=REFINE_SMALLEST, most=REFINE_SOLVES)
+    counts = dict(function_evaluations=evaluations, iterations=iterations)
+    if reached:
+        why = (f"{result.message}: reached from the neighbour at ζ = {origin:.6g} in "
+               f"{solves} steps of ζ, the direct start having failed ({failed.message})")
+        return attrs.evolve(result, message=why, **counts)
     why = (f"{failed.message}; approached again from the neighbour at ζ = {origin:.6g} in "
            f"steps of ζ down to {REFINE_SMALLEST:g} of the gap ({solves} solves), it did not "
            f"converge either ({result.message})")
-    return attrs.evolve(failed, message=why, function_evaluations=evaluations,
-                        iterations=iterations)
+    return attrs.evolve(failed, message=why, **counts)
 
 
 # kernel tables depend only on profile, rheology, kernel and ζ: a small cache keyed by exactly

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..._stepping import march
 from ...contact.topology import TWO_PI, repair
 from .sets import MIN_GAP, MIN_WIDTH, Control, first_touch
 from .state import Outcome, State
@@ -247,27 +248,33 @@ class Path:
         (at most :data:`LOAD_STEP_SOLVES` solves). Full contact on the way is the answer if the
         closed interface holds the target (:meth:`ClosedContact.supports`).
         """
-        eq = self.eq
         if state.fields is None:
             return None
         start = float(state.fields.mean_pressure)
-        done, step, solves, current = 0.0, 0.5, 0, state
-        while solves < LOAD_STEP_SOLVES and step >= LOAD_STEP_SMALLEST:
-            to = min(done + step, 1.0)
-            trial = eq.solve(current.edges, Control.load_of(start + to * (target.value - start)))
-            solves += 1
+        current, closed, stopped = state, None, False
+
+        def attempt(to: float) -> bool | None:
+            nonlocal current, closed, stopped
+            trial = self.eq.solve(current.edges,
+                                  Control.load_of(start + to * (target.value - start)))
             if trial.outcome is Outcome.FULL_CONTACT:
-                return trial if self.closed.supports(target.value) else None
+                stopped = True
+                closed = trial if self.closed.supports(target.value) else None
+                return None
             if trial.outcome is not Outcome.CONVERGED:
-                step *= 0.5
-                continue
-            if to >= 1.0:
-                self.log.event(f"the target load reached from there in {solves} steps of load")
-                return trial
-            done, current, step = to, trial, min(2.0 * step, 1.0 - to)
-        self.log.event(f"no steps of load from p̃∞ = {start:.6g} reach the target ({solves} "
-                       "solves)")
-        return None
+                return False
+            current = trial
+            return True
+
+        done, solves = march(attempt, smallest=LOAD_STEP_SMALLEST, most=LOAD_STEP_SOLVES)
+        if stopped:
+            return closed
+        if not done:
+            self.log.event(f"no steps of load from p̃∞ = {start:.6g} reach the target ({solves} "
+                           "solves)")
+            return None
+        self.log.event(f"the target load reached from there in {solves} steps of load")
+        return current
 
     def closed_past_peak(self, peak: tuple[float, float], end: State,
                          target: Control) -> State | None:
