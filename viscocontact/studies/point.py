@@ -93,7 +93,8 @@ class PointSpec:
     origin_edges : tuple of float
         That neighbour's contact set, flattened. A point continued from it (``started_from``
         ``"neighbour"``) that does not converge is approached again from it in smaller steps of
-        ζ (:func:`refined`); its message says so.
+        ζ (:func:`refined`), and when no step reaches it, solved from first touch
+        (:func:`branch_ended`); its message says so.
     """
 
     chain: int
@@ -142,11 +143,12 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     record = _skeleton(scene, spec)
     try:
         with single_blas_thread(), deadline(time_limit):
-            result = _solve(scene, spec, initial)
+            result, started_from = _solve(scene, spec, initial)
     except Exception as exc:  # stored with its reason; the study goes on
         record.update(status=ERROR, converged=False, message=f"{type(exc).__name__}: {exc}")
         record["seconds"] = time.perf_counter() - t0
         return record
+    record["started_from"] = started_from
     out = result.to_dict()
     for key in COLUMNS:
         if key in out and key not in ("edges", "zeta"):
@@ -177,6 +179,8 @@ def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
 
 
 def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
+    """``(result, started_from)``: the point's result and where its solve started (the spec's
+    ``started_from``, or :data:`FIRST_TOUCH` for a point whose branch ended before it)."""
     from ..problem import Discretization
 
     options = {}
@@ -194,8 +198,11 @@ def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
     result = _solve_at(scene, None, start, options, fields=spec.fields)
     if (result.converged or spec.started_from != NEIGHBOUR or origin is None
             or origin_start is None):
-        return result
-    return refined(scene, options, origin, origin_start, result, fields=spec.fields)
+        return result, spec.started_from
+    result = refined(scene, options, origin, origin_start, result, fields=spec.fields)
+    if result.converged:
+        return result, spec.started_from
+    return branch_ended(scene, options, result, fields=spec.fields)
 
 
 def _solve_at(scene: Mapping[str, Any], zeta: float | None, start, options: dict, *,
@@ -232,17 +239,20 @@ def refined(scene: Mapping[str, Any], options: dict, origin: float, start: np.nd
     span = math.log(target / origin)
     current: np.ndarray | None = start
     result, evaluations, iterations = failed, failed.function_evaluations, failed.iterations
+    furthest = origin
 
     def attempt(to: float) -> bool:
-        nonlocal current, result, evaluations, iterations
+        nonlocal current, result, evaluations, iterations, furthest
         last = to >= 1.0
-        result = _solve_at(scene, None if last else origin * math.exp(to * span), current,
-                           options, fields=fields and last)
+        zeta = origin * math.exp(to * span)
+        result = _solve_at(scene, None if last else zeta, current, options,
+                           fields=fields and last)
         evaluations += result.function_evaluations
         iterations += result.iterations
         if result.converged and not last:
             current = (None if result.full_contact
                        else np.asarray(result.edges, dtype=float).reshape(-1))
+            furthest = zeta
         return bool(result.converged)
 
     reached, solves = march(attempt, smallest=REFINE_SMALLEST, most=REFINE_SOLVES)
@@ -251,10 +261,33 @@ def refined(scene: Mapping[str, Any], options: dict, origin: float, start: np.nd
         why = (f"{result.message}: reached from the neighbour at ζ = {origin:.6g} in "
                f"{solves} steps of ζ, the direct start having failed ({failed.message})")
         return attrs.evolve(result, message=why, **counts)
+    reach = ("no step converged" if furthest == origin
+             else f"the steps reached ζ = {furthest:.6g} and no further")
     why = (f"{failed.message}; approached again from the neighbour at ζ = {origin:.6g} in "
-           f"steps of ζ down to {REFINE_SMALLEST:g} of the gap ({solves} solves), it did not "
-           f"converge either ({result.message})")
+           f"steps of ζ down to {REFINE_SMALLEST:g} of the gap ({solves} solves, {reach}), it "
+           f"did not converge either ({result.message})")
     return attrs.evolve(failed, message=why, **counts)
+
+
+def branch_ended(scene: Mapping[str, Any], options: dict, failed, *, fields: bool = False):
+    """``(result, started_from)`` for a continued point that :func:`refined` did not reach
+    either: the branch of equilibria it was continued along ends before its ζ (a fold in ζ,
+    where the contact set has to jump and no continuation leads), so the point is solved from
+    first touch at its own ζ, as the first point of a chain is, and the chain goes on from there.
+    The message says so and keeps why the continuation failed; ``function_evaluations`` and
+    ``iterations`` count every solve. ``started_from`` is then :data:`FIRST_TOUCH`. A point
+    that does not converge from first touch either stays failed (``failed``, with both reasons,
+    and the spec's own start)."""
+    fresh = _solve_at(scene, None, None, options, fields=fields)
+    counts = dict(function_evaluations=failed.function_evaluations
+                  + fresh.function_evaluations,
+                  iterations=failed.iterations + fresh.iterations)
+    if fresh.converged:
+        why = (f"{fresh.message}: from first touch at this ζ, the branch continued from the "
+               f"neighbour having ended before it ({failed.message})")
+        return attrs.evolve(fresh, message=why, **counts), FIRST_TOUCH
+    why = f"{failed.message}; from first touch it did not converge either ({fresh.message})"
+    return attrs.evolve(failed, message=why, **counts), NEIGHBOUR
 
 
 # kernel tables depend only on profile, rheology, kernel and ζ: a small cache keyed by exactly

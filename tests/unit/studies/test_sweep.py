@@ -197,10 +197,11 @@ def test_a_wide_gap_is_crossed_through_intermediate_equilibria(tmp_path, adhesiv
         assert np.allclose(data.points["edges"][row], result.edges.ravel(), rtol=0, atol=1e-12)
 
 
-def _refusing_far_steps(monkeypatch, decades):
+def _refusing_far_steps(monkeypatch, decades, first_touch=True):
     """Make every solve of a study point fail whose ζ lies more than ``decades`` from the last
-    ζ solved successfully (or from the first one asked); returns the list of ``(ζ, converged)``
-    of the calls."""
+    ζ solved successfully (or from the first one asked), and with ``first_touch=False`` every
+    solve from first touch after the first; returns the list of ``(ζ, converged)`` of the
+    calls."""
     from viscocontact.studies import point
 
     real = point._solve_at
@@ -209,7 +210,8 @@ def _refusing_far_steps(monkeypatch, decades):
     def solve_at(scene, zeta, start, options, *, fields=False):
         z = float(scene["sliding"]["zeta"] if zeta is None else zeta)
         last = next((c for c, ok in reversed(calls) if ok), None)
-        far = last is not None and start is not None and abs(np.log10(z / last)) > decades
+        far = last is not None and (abs(np.log10(z / last)) > decades if start is not None
+                                    else not first_touch)
         result = real(scene, zeta, start, options, fields=fields)
         if far:
             result = attrs.evolve(result, converged=False, message="too far")
@@ -250,18 +252,44 @@ def test_a_point_that_fails_from_its_neighbour_is_approached_in_smaller_steps(
         "function_evaluations"][0]
 
 
-def test_a_point_that_no_step_reaches_stays_failed_and_says_so(tmp_path, adhesive, mesh,
-                                                                monkeypatch):
+def test_a_point_whose_branch_ends_is_solved_from_first_touch_and_says_so(
+        tmp_path, adhesive, mesh, monkeypatch):
+    """No step of ζ reaches the point from its neighbour (the branch ends before it): it is the
+    equilibrium of a first-touch solve at its own ζ, recorded as started from first touch, with
+    both reasons in its message."""
     from viscocontact.studies.point import REFINE_SMALLEST, REFINE_SOLVES
 
     calls = _refusing_far_steps(monkeypatch, 0.0)
     data = run(Sweep(scene=adhesive, zetas=[1.0, 1e-2], discretization=mesh, pair=False),
                tmp_path / "s.h5", progress=None)
-    assert data.points["converged"].tolist() == [True, False]
+    assert data.points["converged"].tolist() == [True, True]
+    assert data.points["started_from"].tolist() == ["first touch", "first touch"]
     message = data.points["message"][1]
-    assert message.startswith("too far; approached again from the neighbour at ζ = 1")
-    assert "did not converge either" in message
-    tries = calls[2:]
+    assert "from first touch at this ζ, the branch continued from the neighbour having ended" \
+        in message
+    assert "too far; approached again from the neighbour at ζ = 1" in message
+    assert "no step converged" in message and "did not converge either" in message
+    tries = calls[2:-1]
     assert not any(ok for _, ok in tries) and 1 <= len(tries) <= REFINE_SOLVES
     # the steps halve down to the smallest
     assert min(abs(np.log10(z)) for z, _ in tries) == pytest.approx(2 * REFINE_SMALLEST)
+    with single_blas_thread():
+        fresh = ContactProblem.from_scene(attrs.evolve(adhesive, zeta=1e-2),
+                                          discretization=Discretization(**mesh)).solve()
+    assert fresh.converged
+    assert data.points["area"][1] == pytest.approx(fresh.area, rel=1e-12, abs=0)
+    assert np.allclose(data.points["edges"][1], fresh.edges.ravel(), rtol=0, atol=1e-12)
+    assert data.points["function_evaluations"][1] > fresh.function_evaluations
+
+
+def test_a_point_that_no_start_reaches_stays_failed_and_says_so(tmp_path, adhesive, mesh,
+                                                                 monkeypatch):
+    calls = _refusing_far_steps(monkeypatch, 0.0, first_touch=False)
+    data = run(Sweep(scene=adhesive, zetas=[1.0, 1e-2], discretization=mesh, pair=False),
+               tmp_path / "s.h5", progress=None)
+    assert data.points["converged"].tolist() == [True, False]
+    assert data.points["started_from"].tolist() == ["first touch", "neighbour"]
+    message = data.points["message"][1]
+    assert message.startswith("too far; approached again from the neighbour at ζ = 1")
+    assert message.endswith("; from first touch it did not converge either (too far)")
+    assert not any(ok for _, ok in calls[2:])
