@@ -12,11 +12,13 @@ the δX = 1e-4 of the thesis's rough curves. On the sinusoid the range that matc
 ``δX/a0 ≈ 3.9`` (``docs/cohesive.md``), which here is h0 ≈ 5 nm.
 
 Small default: one realization, p̃∞ = 0.3, 11 ζ from 1e4 to 1e-6, h0 = 1 and 10 nm, δX = 1e-4.
-``--full``: five realizations (seeds 0-4), 30 ζ, p̃∞ = 0.1, 0.3, 0.6, h0 = 1, 5 and 10 nm. A
-point whose continuation did not converge is left out of its ζ's mean (the CSV's ``count`` says
-how many realizations it holds): solved again from first touch it lands on another equilibrium
-(``docs/cohesive.md``), so it is not mixed in. Writes the study files, ``cohesive_rough.csv``
-(the means and 95 % bands per curve, load and ζ) and ``cohesive_rough.png``.
+``--full``: five realizations (seeds 0-4), 30 ζ, p̃∞ = 0.1, 0.3, 0.6, h0 = 1, 5 and 10 nm
+(``docs/cohesive.md`` uses ``--seeds 0:20``). A point whose continuation ended before it (no
+step of ζ reaches it from its neighbour) is solved from first touch and counted, as
+``docs/studies.md`` describes; a point that did not converge at all is left out of its ζ's mean
+(the CSV's ``count`` says how many realizations it holds). Writes the study files,
+``cohesive_rough.csv`` (the means and 95 % bands per curve, load and ζ) and
+``cohesive_rough.png``.
 
 Usage: ``python examples/cohesive_rough.py [--out DIR] [--full] [--workers N] [--ranges 1,10]
 [--edge-perturbations 1e-4] [--seeds 0:5] [--zetas 1e4:1e-6:30] [--pressures 0.1,0.3,0.6]``
