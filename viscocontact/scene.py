@@ -882,11 +882,9 @@ def _tabor(scene: "Scene", groups: dict[str, Any]) -> tuple[dict[str, Any], list
     return out, warnings
 
 
-#: Maugis's transition parameter λ above which a scene is JKR-like, below which DMT-like.
-JKR_LIKE, DMT_LIKE = 5.0, 0.1
-
-
 def _regime(value: float) -> str:
+    from .adhesion.maugis_dugdale import DMT_LIKE, JKR_LIKE
+
     if value >= JKR_LIKE:
         return f"JKR-like (λ >= {JKR_LIKE:g})"
     if value <= DMT_LIKE:

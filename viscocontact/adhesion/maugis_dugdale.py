@@ -57,6 +57,8 @@ GAP_MARGIN = 1e-3
 SLACK = 10.0
 #: Points across a neck at which its gap is sampled (:meth:`MaugisDugdale._reclassified`).
 NECK_POINTS = 48
+#: Maugis's transition parameter λ above which a scene is JKR-like, below which DMT-like.
+JKR_LIKE, DMT_LIKE = 5.0, 0.1
 
 
 @attrs.frozen(kw_only=True)

@@ -201,6 +201,20 @@ def test_plan_of_resolved_cohesive_zones():
     assert f"shortest zone ≈ {a0:.3g} spans 160 smallest" in elastic.choice
 
 
+@pytest.mark.parametrize("h0, jkr_like", [(0.007, True), (0.0398, False), (0.5, False)])
+def test_plan_says_where_tension_without_contact_may_be_stable(h0, jkr_like):
+    """λ = 5.7, 1 and 0.08 on the sinusoid Λ̃ = 0.1 at γ̃ = 5e-4: only the JKR-like scene's plan
+    is silent about the snap-in; the others point to the spectral method's grid."""
+    from viscocontact.adhesion.maugis_dugdale import MaugisDugdale
+
+    lam = MaugisDugdale(gamma=5e-4, range=h0).transition_parameter(0.1)
+    assert (lam >= 5.0) is jkr_like
+    choice = _md_plan(5e-4, h0)["edges"].choice
+    assert ("traction without contact" in choice) is not jkr_like
+    if not jkr_like:
+        assert f"λ = {lam:.3g} < 5" in choice and 'kind = "spectral"' in choice
+
+
 def test_plan_says_when_the_zone_is_below_the_smallest_element():
     plan = _md_plan(2.4e-7, 1e-7, rheology=Elastic(), zeta=0.0)  # a0 = 1e-8, elements >= 1e-6
     edges = plan["edges"]

@@ -93,8 +93,31 @@ def _cohesive_step(problem, spec) -> PlanStep:
         verdict = (f"not resolved: the shortest zone ≈ {zone:.3g} is {1 / ratio:.3g} times smaller "
                    "than the smallest element, so the result approaches the energy-balance "
                    "(short-range, JKR-type) limit of adhesion kind 'energy-balance'")
-    return PlanStep(stage="edges", choice=choice + "; zones " + verdict,
+    return PlanStep(stage="edges", choice=choice + "; zones " + verdict + _jump_in(problem),
                     reason=f"{where}; zone estimate: {how}")
+
+
+def _jump_in(problem) -> str:
+    """What the plan says of tension without contact: nothing for a JKR-like scene (Maugis's λ
+    at the relaxed modulus at least :data:`~viscocontact.adhesion.maugis_dugdale.JKR_LIKE`, the
+    crest radius as ``describe`` takes it), where a peak that comes within the range jumps in as
+    the BEM assumes; otherwise that a patch of traction without contact may be stable, which
+    the BEM does not model and the spectral method's grid does."""
+    from ...adhesion.maugis_dugdale import JKR_LIKE
+    from ...profiles import Sinusoid
+
+    adh, profile = problem.adhesion, problem.profile
+    if not callable(getattr(adh, "transition_parameter", None)):
+        return ""
+    length = (float(profile.amplitude) if isinstance(profile, Sinusoid)
+              else float(profile.statistics().rms))
+    lam = adh.transition_parameter(length)
+    if lam >= JKR_LIKE:
+        return ""
+    return (f"; Maugis's λ = {lam:.3g} < {JKR_LIKE:g} (not JKR-like): a patch of cohesive "
+            "traction without contact may be stable here, which the BEM does not model (a peak "
+            "that comes within the range snaps into contact); the spectral method's grid models "
+            "it ([method] kind = \"spectral\")")
 
 
 def _cohesive(adhesion) -> bool:
