@@ -59,6 +59,29 @@ def test_mesh_convergence_without_edge_zones():
     assert errs[1] < 2e-5 and errs[0] / errs[1] > 8
 
 
+@pytest.mark.parametrize("lam", [1.0, 2.0, 10.0])
+def test_the_pull_off_is_the_wavy_solutions(lam):
+    """The most tensile load of the partial-contact branch (the pull-off under load control,
+    a fold there): reached in penetration control, from the state at 0.95 of it in eight
+    steps of Δ̃ to the reference's pull-off penetration. Measured: the load within 7e-8
+    (λ = 1), 1e-6 (2) and 1.8e-5 (10) of the reference's, the area within 1e-4."""
+    ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=lam)
+    off = ref.pull_off()
+    model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
+
+    def solve(initial=None, **control):
+        return ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=Elastic(),
+                              adhesion=model, solver=Newton(), **control).solve(initial=initial)
+
+    r = solve(mean_pressure=0.95 * off.mean_pressure)
+    assert r.converged, r.message
+    for delta in np.linspace(r.penetration, off.penetration, 9)[1:]:
+        r = solve(initial=r, penetration=float(delta))
+        assert r.converged, r.message
+    assert r.mean_pressure == pytest.approx(off.mean_pressure, rel=1e-4)
+    assert r.area == pytest.approx(off.area, rel=2e-4)
+
+
 def test_short_range_limit_is_johnson():
     """η → 0 at fixed Γ̃: the area tends to Johnson's JKR-type wavy contact at second order
     (measured: 2.8e-3, 7.8e-4 at η = 0.02, 0.01)."""
