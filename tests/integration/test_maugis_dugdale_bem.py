@@ -122,14 +122,14 @@ def test_a_neck_within_the_range_fills_and_is_the_adhesionless_solution_under_mo
         assert abs(r.area / (westergaard_area(0.3 + extra)) - 1) < 1e-3
 
 
-@pytest.mark.parametrize("lam, p", [(0.5, 0.1), pytest.param(0.3, 0.05, marks=pytest.mark.slow)])
+@pytest.mark.parametrize("lam, p", [(0.5, 0.1), pytest.param(0.3, 0.05, marks=pytest.mark.slow),
+                                    (0.1, -0.03), (0.05, 0.0)])
 def test_saturated_zones_are_the_wavy_solution(lam, p):
-    """DMT-like ranges (λ = 0.5 and 0.3: η = 0.80 and 1.33) at loads above the closure maximum
-    of the partial branch, where the reference's only state is saturated: Westergaard's trough
-    gap is within the range, the zones of the period fill the rest of it, and
-    ``p̃∞ = sin²(Ã/4) - σ̃0``. Measured: Ã 1.0e-4 below it (the edge zones' offset of the
-    other tests). Before necks filled by their zones were modelled, these stalled in the zone
-    iteration."""
+    """The DMT-like side (λ = 0.5, 0.3, 0.1 and 0.05: η = 0.80, 1.33, 3.98 and 7.95) at loads
+    where the reference's only state is saturated: Westergaard's trough gap is within the range,
+    the zones of the period fill the rest of it, and ``p̃∞ = sin²(Ã/4) - σ̃0``. Measured: Ã
+    1.0e-4 below it (the edge zones' offset of the other tests), 2.5e-4 at λ = 0.05. Before
+    necks filled by their zones were modelled, these stalled in the zone iteration."""
     ref, r = _solve(lam, p)
     assert r.converged, r.message
     exact = brentq(lambda a: ref.modulus_ratio * np.sin(a / 4) ** 2 - ref.cohesive_stress - p,
