@@ -857,12 +857,9 @@ def _tabor(scene: "Scene", groups: dict[str, Any]) -> tuple[dict[str, Any], list
     e0 = phys["E0"]
     dgamma = phys.get("work_of_adhesion", groups["gamma"] * math.pi * e0 / (nu2 * q0))
     z0 = phys.get("equilibrium_distance", DEFAULT_EQUILIBRIUM_DISTANCE)
-    if kind_of("profile", scene.profile) == "sinusoid":
-        radius = 1.0 / (q0 * groups["amplitude"])  # 1/(q0² Λ)
-        which = "crest radius 1/(q0² Λ) of the sinusoid"
-    else:
-        radius = 1.0 / (q0 * groups["rms"])  # 1/(q0² r_rms), eq. 4.55
-        which = "R = λ0²/(4π² r_rms) of the equivalent sinusoid (eq. 4.55)"
+    radius = 1.0 / (q0 * scene.profile.crest_length)    # 1/(q0² Λ) or 1/(q0² r_rms), eq. 4.55
+    which = ("crest radius 1/(q0² Λ) of the sinusoid" if _is_sinusoid(scene.profile)
+             else "R = λ0²/(4π² r_rms) of the equivalent sinusoid (eq. 4.55)")
     estar = e0 / nu2
     out.update(
         tabor=tabor_parameter(radius=radius, work_of_adhesion=dgamma, reduced_modulus=estar,
@@ -882,6 +879,14 @@ def _tabor(scene: "Scene", groups: dict[str, Any]) -> tuple[dict[str, Any], list
     return out, warnings
 
 
+def _is_sinusoid(profile) -> bool:
+    """Whether the crest length of ``profile`` is a sinusoid's amplitude (the wording of
+    ``describe``; :attr:`~viscocontact.profiles.Profile.crest_length` gives the value)."""
+    from .profiles import Sinusoid
+
+    return isinstance(profile, Sinusoid)
+
+
 def _regime(value: float) -> str:
     from .adhesion.maugis_dugdale import DMT_LIKE, JKR_LIKE
 
@@ -899,11 +904,10 @@ def _cohesive(scene: "Scene", groups: dict[str, Any]) -> dict[str, Any]:
     if isinstance(adhesion, ComponentSpec):
         adhesion = adhesion.resolve("adhesion")
     gamma, h0, amp, beta = adhesion.gamma, adhesion.range, groups["amplitude"], groups["beta"]
-    if kind_of("profile", scene.profile) == "sinusoid":
-        length, which = amp, "crest radius R = 1/(q0² Λ) of the sinusoid"
-    else:
-        length, which = groups["rms"], ("R = 1/(q0² r_rms) of the equivalent sinusoid "
-                                        "(eq. 4.55), not the crest of the highest asperity")
+    length = scene.profile.crest_length
+    which = ("crest radius R = 1/(q0² Λ) of the sinusoid" if _is_sinusoid(scene.profile)
+             else "R = 1/(q0² r_rms) of the equivalent sinusoid (eq. 4.55), not the crest of "
+                  "the highest asperity")
     lam = adhesion.transition_parameter(length) if gamma > 0 else 0.0
     lam_glassy = adhesion.transition_parameter(length, beta) if gamma > 0 else 0.0
     regime = _regime(lam)

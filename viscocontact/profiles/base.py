@@ -135,6 +135,13 @@ class Profile(abc.ABC):
         """``Λ̃ = q0·max r``."""
         return self.peak()[1]
 
+    @property
+    def crest_length(self) -> float:
+        """``L̃`` of the crest radius ``R = 1/(q0²L)`` that the adhesion parameters (Tabor's μ_T,
+        Maugis's λ) take: the equivalent sinusoid of eq. 4.55, ``L̃ = q0·r_rms``, not the crest
+        of the highest asperity (:class:`~viscocontact.profiles.Sinusoid`: its amplitude)."""
+        return float(self.statistics().rms)
+
     def statistics(self, n: int = 1 << 14) -> ProfileStatistics:
         """Statistics from ``n`` uniform samples (spectral profiles override with exact moments)."""
         x = np.linspace(0.0, TWO_PI, n, endpoint=False)

@@ -55,3 +55,8 @@ class Sinusoid(SpectralProfile):
     def peak(self) -> tuple[float, float]:
         """``(0, Λ̃)`` exactly."""
         return 0.0, self.amplitude
+
+    @property
+    def crest_length(self) -> float:
+        """``Λ̃``: the crest radius is ``1/(q0²Λ)``."""
+        return float(self.amplitude)

@@ -104,14 +104,11 @@ def _jump_in(problem) -> str:
     the BEM assumes; otherwise that a patch of traction without contact may be stable, which
     the BEM does not model and the spectral method's grid does."""
     from ...adhesion.maugis_dugdale import JKR_LIKE
-    from ...profiles import Sinusoid
 
-    adh, profile = problem.adhesion, problem.profile
+    adh = problem.adhesion
     if not callable(getattr(adh, "transition_parameter", None)):
         return ""
-    length = (float(profile.amplitude) if isinstance(profile, Sinusoid)
-              else float(profile.statistics().rms))
-    lam = adh.transition_parameter(length)
+    lam = adh.transition_parameter(problem.profile.crest_length)
     if lam >= JKR_LIKE:
         return ""
     return (f"; Maugis's λ = {lam:.3g} < {JKR_LIKE:g} (not JKR-like): a patch of cohesive "
