@@ -1,13 +1,16 @@
-"""Threads of the compiled influence loop: the rows of one influence matrix split between threads.
+"""Threads of a single solve: the rows of an influence matrix, and the columns of a multiple
+right-hand-side solve, split between threads.
 
 The rows of an influence matrix are independent and each is computed with the same arithmetic
 whichever thread computes it, so the result is bit for bit the same for any thread count. The
 compiled loop (:mod:`viscocontact.kernels._compiled`) releases the GIL, so the threads run at
-once. Nothing else is threaded: BLAS stays single-threaded in a solve (:mod:`._blas`), because a
-multi-threaded factorisation sums in another order. Nor are a factorisation's solves split
-between Python threads: scipy 1.17's ``lu_solve`` shifts the pivot array to LAPACK's 1-based
-indices and back in place, so two threads solving with one 1200 × 1200 factorisation at once got
-wrong columns in five tries of five (with a copy of the pivots each, none).
+once. The columns of a solve with one factorisation (:func:`solve_columns`, the finite-δX
+borders' ``B⁻¹c``) are split into parts fixed by the column count, whatever the thread count,
+each part one solve with its own copy of the pivots: scipy 1.17's ``lu_solve`` shifts the pivot
+array to LAPACK's 1-based indices and back in place, so two threads solving with one 1200 × 1200
+factorisation and one pivot array at once got wrong columns in five tries of five (with a copy
+of the pivots each, none). BLAS itself stays single-threaded in a solve (:mod:`._blas`), because
+a multi-threaded factorisation sums in another order.
 
 The count is the number of cores this process may use, or the environment variable
 ``VISCOCONTACT_THREADS`` (an integer from 1 to 256), or what :func:`set_threads` set last. A
@@ -20,9 +23,13 @@ import numbers
 import os
 import threading
 from concurrent.futures import ThreadPoolExecutor
-from typing import Callable
+from typing import Callable, TypeVar
+
+import numpy as np
 
 from .errors import ValidationError
+
+T = TypeVar("T")
 
 #: The environment variable that sets the thread count.
 ENV = "VISCOCONTACT_THREADS"
@@ -31,10 +38,19 @@ MOST = 256
 #: Fewest coefficients for which a call is split between threads (a split costs tens of
 #: microseconds; this many coefficients take a few milliseconds on one thread).
 SPLIT_MIN = 100_000
+#: Parts of a multiple right-hand-side solve (:func:`solve_columns`), fixed so that the result
+#: does not depend on the thread count.
+COLUMN_PARTS = 2
+#: The parts' widths are multiples of this many columns.
+COLUMN_UNIT = 12
+#: Fewest columns that are split into parts (below it one solve costs less than the split).
+SPLIT_COLUMNS = 48
 
 _lock = threading.Lock()
 _count: int | None = None
 _pool: ThreadPoolExecutor | None = None
+_side: ThreadPoolExecutor | None = None     # the one thread of :func:`alongside`
+_alone = threading.local()                  # this thread runs beside another's work
 _pool_size = 0
 
 
@@ -62,7 +78,10 @@ def available() -> int:
 
 def threads() -> int:
     """Threads of the influence loop: :func:`set_threads`, else ``VISCOCONTACT_THREADS``, else
-    :func:`available` (at most :data:`MOST`)."""
+    :func:`available` (at most :data:`MOST`); 1 in a thread running beside another's work
+    (:func:`alongside`)."""
+    if getattr(_alone, "on", False):
+        return 1
     if _count is not None:
         return _count
     value = os.environ.get(ENV, "").strip()
@@ -95,11 +114,81 @@ def split_rows(run: Callable[[int, int], None], rows: int, coefficients: int) ->
             f.result()
 
 
+def solve_columns(lu_and_piv, columns: np.ndarray) -> np.ndarray:
+    """``B⁻¹ C`` from the LU factors of ``B`` (:func:`scipy.linalg.lu_factor`) for the columns
+    ``C``, in :data:`COLUMN_PARTS` parts solved at once on as many threads (see :func:`threads`).
+
+    The parts depend on the number of columns only, never on the thread count, so the result is
+    the same bit for bit on one thread and on several (each part is one solve, the same call in
+    either case; test). The parts' widths are multiples of :data:`COLUMN_UNIT`: on the installed
+    OpenBLAS the triangular solves then give the bits of one solve of all columns (measured
+    over systems of 170-2136 unknowns and 23-528 columns; splits at multiples of 4 or 8 columns
+    did not). Calls with fewer than :data:`SPLIT_COLUMNS` columns are one solve. Each part gets
+    its own copy of the pivots: scipy's ``lu_solve`` shifts them to 1-based indices and back in
+    place, so two solves sharing one pivot array at once give wrong columns.
+    """
+    from scipy.linalg import lu_solve
+
+    lu, piv = lu_and_piv
+    m = columns.shape[1] if columns.ndim == 2 else 1
+    if columns.ndim != 2 or m < SPLIT_COLUMNS:
+        return lu_solve((lu, piv), columns, check_finite=False)
+    width = COLUMN_UNIT * -(-m // (COLUMN_UNIT * COLUMN_PARTS))
+    parts = [slice(j, min(j + width, m)) for j in range(0, m, width)]
+    # Fortran order, as LAPACK returns one solve: products with its columns then take the same
+    # BLAS path and give the same bits
+    out = np.empty((lu.shape[0], m), dtype=np.result_type(lu, columns), order="F")
+
+    def run(share) -> None:
+        own = piv.copy()
+        for part in share:
+            out[:, part] = lu_solve((lu, own), columns[:, part], check_finite=False)
+
+    n = min(threads(), len(parts))
+    if n < 2:
+        run(parts)
+        return out
+    pool = _executor(n - 1)
+    futures = [pool.submit(run, parts[k::n]) for k in range(1, n)]
+    try:
+        run(parts[0::n])
+    finally:
+        for f in futures:
+            f.result()
+    return out
+
+
+def alongside(work: Callable[[], T], task: Callable[[], object]) -> T:
+    """``work()``, computed on a thread of its own while this thread runs ``task()`` alone
+    (its influence loops and solves unsplit, see :func:`threads`), so that the two share two
+    cores; with one thread, ``work()`` alone and ``task`` not at all.
+
+    For work that holds one core and releases the GIL (a LAPACK factorisation) and a task whose
+    result is cached for later and would otherwise be computed after it: the task changes no
+    result, only when it is computed. An exception of the task is raised once the work is done.
+    """
+    if threads() < 2:
+        return work()
+    global _side
+    with _lock:
+        if _side is None:
+            _side = ThreadPoolExecutor(max_workers=1, thread_name_prefix="viscocontact-side")
+        side = _side
+    future = side.submit(work)
+    _alone.on = True
+    try:
+        task()
+    finally:
+        _alone.on = False
+        result = future.result()
+    return result
+
+
 def _forget_pool() -> None:
     """In a forked child: the parent's pool threads do not exist there, so start afresh (a task
     sent to the inherited pool would never run)."""
-    global _pool, _pool_size, _lock
-    _pool, _pool_size, _lock = None, 0, threading.Lock()
+    global _pool, _pool_size, _lock, _side
+    _pool, _pool_size, _lock, _side = None, 0, threading.Lock(), None
 
 
 if hasattr(os, "register_at_fork"):

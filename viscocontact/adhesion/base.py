@@ -100,6 +100,14 @@ class AdhesionModel(abc.ABC):
         δX → 0); reported with every result."""
         return 0.0
 
+    def bordered_advances(self, mesh) -> list[tuple[int, float]]:
+        """The ``(edge, δX)`` whose bordered fields (:meth:`EdgeContext.border
+        <viscocontact.contact.edges.EdgeContext.border>`) :meth:`residuals` will ask for on
+        ``mesh``; none by default. Optional: what is named here is prepared while the influence
+        matrix is factorised, on the other core, and anything else when asked for, with the
+        same result."""
+        return []
+
     @property
     def work_of_adhesion(self) -> float:
         """γ̃ (0 without adhesion)."""

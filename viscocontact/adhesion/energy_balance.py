@@ -52,13 +52,21 @@ class EnergyBalance(AdhesionModel):
     def resolved_lengths(self) -> tuple[float, ...]:
         return (self.edge_perturbation,) if self.edge_perturbation > 0 else ()
 
+    def bordered_advances(self, mesh) -> list[tuple[int, float]]:
+        if self.edge_perturbation == 0.0:
+            return []
+        return [(i, self._advance_at(mesh.edges, i)[0]) for i in range(len(mesh.edges))]
+
     def _advance(self, ctx, i: int) -> float:
-        return self._advance_and_slope(ctx, i)[0]
+        return self._advance_at(ctx.mesh.edges, i)[0]
 
     def _advance_and_slope(self, ctx, i: int):
-        """The advance of edge ``i`` and its derivatives in the edges (``(n_edges,)``): ``δX``
-        unless a quarter of the half-width or half the gap to the next contact is smaller."""
-        edges = ctx.mesh.edges
+        return self._advance_at(ctx.mesh.edges, i)
+
+    def _advance_at(self, edges, i: int):
+        """The advance of edge ``i`` of ``edges`` and its derivatives in the edges
+        (``(n_edges,)``): ``δX`` unless a quarter of the half-width or half the gap to the next
+        contact is smaller."""
         n = len(edges)
         j = i // 2
         half = 0.5 * (edges[2 * j + 1] - edges[2 * j])

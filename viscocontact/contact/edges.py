@@ -68,7 +68,8 @@ class EdgeContext:
     """Edge quantities of one field solution (built by the orchestrator, read by adhesion models)."""
 
     def __init__(self, fields: FieldSolution, kernel, shape: NormalizedProfile, spec: MeshSpec,
-                 amplitude: float, zones=None, counts=None):
+                 amplitude: float, zones=None, counts=None,
+                 geometry: BorderGeometry | None = None):
         self.fields = fields
         self.kernel = kernel
         self.shape = shape
@@ -77,6 +78,9 @@ class EdgeContext:
         self.counts = counts            # elements of each contact (None: spec.elements for all)
         self.amplitude = amplitude      # Λ̃
         self._sif: np.ndarray | None = None
+        #: the borders' new rows and columns, when prepared beside the factorisation
+        #: (:func:`border_geometry`; :meth:`prepare_borders` computes them otherwise)
+        self._geometry = geometry
 
     @property
     def mesh(self) -> Mesh:
@@ -208,37 +212,8 @@ class EdgeContext:
         return d_u / dx, d_lp / dx
 
     def _new_elements(self, i: int, dx: float):
-        """``(left, right)`` of the elements that extend the base mesh over ``dx`` outside edge
-        ``i``, or None when ``dx`` is less than ``MIN_BORDER`` edge elements (the old edge's
-        singular field, now inside the contact, would be left unresolved).
-
-        When the edge element ``h`` divides ``dx`` into at most ``ALIGN_MAX`` parts (a zone
-        aligned with the advance), ``dx/h`` equal elements; otherwise elements that grow by the
-        zone's grading from ``h`` at both ends of the advance towards its middle, so that the new
-        edge is meshed like a zone and the old one keeps its neighbours' size.
-        """
-        mesh = self.mesh
-        sl = mesh.slice(i // 2)
-        first = sl.start if i % 2 == 0 else sl.stop - 1
-        h = float(mesh.width[first])
-        n = int(round(dx / h))
-        if dx < MIN_BORDER * h * (1 - 1e-9):
-            return None
-        if n <= ALIGN_MAX and abs(n * h - dx) <= 1e-9 * dx:
-            sizes = np.full(n, h)
-        else:
-            g = self.spec.grading
-            # k sizes h g^j (j < k) from each end, as many as fit into half the advance
-            k = max(int(np.log1p(0.5 * dx * (g - 1.0) / h) / np.log(g)), 1)
-            half = h * g ** np.arange(k)
-            sizes = np.concatenate([half, half[::-1]])
-            sizes *= dx / sizes.sum()
-        offsets = np.concatenate([[0.0], np.cumsum(sizes)])
-        offsets[-1] = dx
-        x = float(mesh.edges[i])
-        nodes = x - dx + offsets if i % 2 == 0 else x + offsets
-        nodes[-1 if i % 2 == 0 else 0] = x
-        return nodes[:-1], nodes[1:]
+        """:func:`new_elements` of this context's mesh."""
+        return new_elements(self.mesh, self.spec, i, dx)
 
     def _base_products(self):
         """``A σ⁻`` and ``(h σ⁻)ᵀ A`` of the base field with the antisymmetric matrix (cached)."""
@@ -281,64 +256,52 @@ class EdgeContext:
     def prepare_borders(self, advances) -> None:
         """Compute the bordered fields of every ``(edge, δX)`` in ``advances`` at once (one
         evaluation of the new rows and columns and one multiple right-hand-side solve for all
-        edges instead of one per edge) and cache them for :meth:`border`."""
+        edges instead of one per edge) and cache them for :meth:`border`. The new rows and
+        columns are the ``geometry`` given to the context when it has them (prepared while the
+        base matrix was factorised), else computed here."""
         todo = [(int(i), float(dx)) for i, dx in advances if (int(i), float(dx)) not in
                 self._borders]
-        new = []
-        for key in todo:
-            elements = self._new_elements(*key)
-            if elements is None:
-                self._borders[key] = None
-            else:
-                new.append((key, elements))
-        if not new:
+        if not todo:
             return
+        geometry = self._geometry
+        if geometry is None or not geometry.covers(todo):
+            geometry = border_geometry(self.mesh, self.kernel, self.shape, self.spec, todo)
         from scipy.linalg import lu_factor, lu_solve
 
-        base, mesh, k = self.fields, self.mesh, self.kernel
-        a = np.concatenate([e[0] for _, e in new])
-        b = np.concatenate([e[1] for _, e in new])
-        xi = 0.5 * (a + b)
-        bounds = np.cumsum([0] + [len(e[0]) for _, e in new])
-        pair = getattr(k, "antiderivative_pair", None) if self.dissipative else None
-        cols = rows = None
-        if pair is not None:      # influence and antisymmetric integrals share the table look-ups
-            c, cols = element_integrals(pair, mesh.mid, a, b)
-            r, rows = element_integrals(pair, xi, mesh.left, mesh.right)
-            c += k.mean * (b - a)
-            r += k.mean * mesh.width
-        else:
-            c = k.influence(mesh.mid, a, b)                      # (N, n)
-            r = k.influence(xi, mesh.left, mesh.right)          # (n, N)
-            if self.dissipative:
-                E = k.even_antiderivative
-                cols = element_integrals(E, mesh.mid, a, b)      # rows: base, columns: new
-                rows = element_integrals(E, xi, mesh.left, mesh.right)   # new, base
-        w_new = self.shape.heights(xi) - 1.0 + base.penetration
-        Y = lu_solve(base.lu, c, check_finite=False)
+        from .._threads import solve_columns
+
+        new = [key for key in todo if geometry.elements[key] is not None]
+        for key in todo:
+            if geometry.elements[key] is None:
+                self._borders[key] = None
+        if not new:
+            return
+        base, mesh = self.fields, self.mesh
+        parts = [geometry.part(key) for key in new]
+        if new == geometry.new:
+            c, r, cols, rows = geometry.c, geometry.r, geometry.cols, geometry.rows
+            heights = geometry.heights
+        else:       # a subset: its columns and rows, in the order of ``new``
+            take = np.concatenate([np.arange(sl.start, sl.stop) for sl in parts])
+            c, r, heights = geometry.c[:, take], geometry.r[take], geometry.heights[take]
+            cols = None if geometry.cols is None else geometry.cols[:, take]
+            rows = None if geometry.rows is None else geometry.rows[take]
+        bounds = np.cumsum([0] + [sl.stop - sl.start for sl in parts])
+        w_new = heights + base.penetration
+        Y = solve_columns(base.lu, c)                        # (N, Σn), on the cores
         w_old = base.rhs0 + base.penetration
         hsig = mesh.width * base.sigma
         r_sigma = r @ base.sigma
         if self.dissipative:
+            assert cols is not None and rows is not None
             a_sig, hsig_a = self._base_products()
             cols_hsig = hsig @ cols
             rows_sigma = rows @ base.sigma
-        # the new elements against each other: each advance needs its diagonal block (tens
-        # of coefficients, where the call costs more than the evaluation), so groups of
-        # advances of up to GROUP_ELEMENTS elements are evaluated in one call
-        blocks, g0 = {}, 0
-        for n in range(1, len(new) + 1):
-            if n == len(new) or bounds[n + 1] - bounds[g0] > GROUP_ELEMENTS:
-                gs = slice(bounds[g0], bounds[n])
-                d_group = k.influence(xi[gs], a[gs], b[gs])
-                for m in range(g0, n):
-                    rel = slice(bounds[m] - bounds[g0], bounds[m + 1] - bounds[g0])
-                    blocks[m] = d_group[rel, rel]
-                g0 = n
-        for n, ((i, dx), _) in enumerate(new):
+        for n, (i, dx) in enumerate(new):
             sl = slice(bounds[n], bounds[n + 1])
-            ai, bi, yi = a[sl], b[sl], Y[:, sl]
-            d = blocks[n]                                        # (n, n)
+            ai, bi = geometry.elements[(i, dx)]
+            yi = Y[:, sl]
+            d = geometry.blocks[(i, dx)]                         # (n, n)
             schur = lu_factor(d - r[sl] @ yi, check_finite=False)
             s_new = lu_solve(schur, w_new[sl] - r_sigma[sl], check_finite=False)
             s_old = base.sigma - yi @ s_new
@@ -355,6 +318,133 @@ class EdgeContext:
                 s_new=s_new, s_old=s_old, w_new=w_new[sl],
                 cols=None if cols is None else cols[:, sl],
                 rows=None if rows is None else rows[sl], d_u=float(d_u), d_lp=d_lp)
+
+
+def new_elements(mesh: Mesh, spec: MeshSpec, i: int, dx: float):
+    """``(left, right)`` of the elements that extend ``mesh`` over ``dx`` outside edge ``i``, or
+    None when ``dx`` is less than ``MIN_BORDER`` edge elements (the old edge's singular field,
+    now inside the contact, would be left unresolved).
+
+    When the edge element ``h`` divides ``dx`` into at most ``ALIGN_MAX`` parts (a zone aligned
+    with the advance), ``dx/h`` equal elements; otherwise elements that grow by the zone's
+    grading from ``h`` at both ends of the advance towards its middle, so that the new edge is
+    meshed like a zone and the old one keeps its neighbours' size.
+    """
+    sl = mesh.slice(i // 2)
+    first = sl.start if i % 2 == 0 else sl.stop - 1
+    h = float(mesh.width[first])
+    n = int(round(dx / h))
+    if dx < MIN_BORDER * h * (1 - 1e-9):
+        return None
+    if n <= ALIGN_MAX and abs(n * h - dx) <= 1e-9 * dx:
+        sizes = np.full(n, h)
+    else:
+        g = spec.grading
+        # k sizes h g^j (j < k) from each end, as many as fit into half the advance
+        k = max(int(np.log1p(0.5 * dx * (g - 1.0) / h) / np.log(g)), 1)
+        half = h * g ** np.arange(k)
+        sizes = np.concatenate([half, half[::-1]])
+        sizes *= dx / sizes.sum()
+    offsets = np.concatenate([[0.0], np.cumsum(sizes)])
+    offsets[-1] = dx
+    x = float(mesh.edges[i])
+    nodes = x - dx + offsets if i % 2 == 0 else x + offsets
+    nodes[-1 if i % 2 == 0 else 0] = x
+    return nodes[:-1], nodes[1:]
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class BorderGeometry:
+    """What the bordered fields of some edge advances need of the mesh and the kernel alone
+    (:func:`border_geometry`): their new elements and the new rows and columns of the influence
+    and antisymmetric matrices. It does not depend on the field, so it can be computed while the
+    base matrix is factorised.
+
+    Attributes
+    ----------
+    elements : dict
+        ``(edge, δX) -> (left, right)`` of the new elements, or None (no border).
+    new : list
+        The keys with a border, in the order of the columns below.
+    c, r : (N, Σn) and (Σn, N) arrays
+        New columns and rows of the influence matrix.
+    cols, rows : arrays or None
+        The antisymmetric matrix's new columns and rows (None for a reciprocal kernel).
+    blocks : dict
+        ``(edge, δX) -> (n, n)`` influence of each advance's new elements on each other.
+    heights : (Σn,) array
+        ``r̃ - 1`` at the new collocation points.
+    """
+
+    elements: dict
+    new: list
+    c: np.ndarray
+    r: np.ndarray
+    cols: np.ndarray | None
+    rows: np.ndarray | None
+    blocks: dict
+    heights: np.ndarray
+    bounds: np.ndarray
+
+    def covers(self, keys) -> bool:
+        return all(key in self.elements for key in keys)
+
+    def part(self, key) -> slice:
+        """The columns of ``key``'s new elements."""
+        n = self.new.index(key)
+        return slice(int(self.bounds[n]), int(self.bounds[n + 1]))
+
+
+def border_geometry(mesh: Mesh, kernel, shape: NormalizedProfile, spec: MeshSpec,
+                    advances) -> BorderGeometry:
+    """The new elements, rows and columns of the bordered fields of ``advances`` (pairs
+    ``(edge, δX)``) on ``mesh`` (:meth:`EdgeContext.prepare_borders`)."""
+    elements, new = {}, []
+    for i, dx in advances:
+        key = (int(i), float(dx))
+        elements[key] = new_elements(mesh, spec, *key)
+        if elements[key] is not None and key not in new:
+            new.append(key)
+    bounds = np.cumsum([0] + [len(elements[key][0]) for key in new])
+    if not new:
+        n = len(mesh.mid)
+        return BorderGeometry(elements=elements, new=new, c=np.empty((n, 0)),
+                              r=np.empty((0, n)), cols=None, rows=None, blocks={},
+                              heights=np.empty(0), bounds=bounds)
+    k = kernel
+    dissipative = len(k.weights) > 0 or k.correction is not None
+    a = np.concatenate([elements[key][0] for key in new])
+    b = np.concatenate([elements[key][1] for key in new])
+    xi = 0.5 * (a + b)
+    pair = getattr(k, "antiderivative_pair", None) if dissipative else None
+    cols = rows = None
+    if pair is not None:      # influence and antisymmetric integrals share the table look-ups
+        c, cols = element_integrals(pair, mesh.mid, a, b)
+        r, rows = element_integrals(pair, xi, mesh.left, mesh.right)
+        c += k.mean * (b - a)
+        r += k.mean * mesh.width
+    else:
+        c = k.influence(mesh.mid, a, b)                      # (N, n)
+        r = k.influence(xi, mesh.left, mesh.right)          # (n, N)
+        if dissipative:
+            E = k.even_antiderivative
+            cols = element_integrals(E, mesh.mid, a, b)      # rows: base, columns: new
+            rows = element_integrals(E, xi, mesh.left, mesh.right)   # new, base
+    heights = shape.heights(xi) - 1.0
+    # the new elements against each other: each advance needs its diagonal block (tens of
+    # coefficients, where the call costs more than the evaluation), so groups of advances of up
+    # to GROUP_ELEMENTS elements are evaluated in one call
+    blocks, g0 = {}, 0
+    for n in range(1, len(new) + 1):
+        if n == len(new) or bounds[n + 1] - bounds[g0] > GROUP_ELEMENTS:
+            gs = slice(bounds[g0], bounds[n])
+            d_group = k.influence(xi[gs], a[gs], b[gs])
+            for m in range(g0, n):
+                rel = slice(bounds[m] - bounds[g0], bounds[m + 1] - bounds[g0])
+                blocks[new[m]] = d_group[rel, rel]
+            g0 = n
+    return BorderGeometry(elements=elements, new=new, c=c, r=r, cols=cols, rows=rows,
+                          blocks=blocks, heights=heights, bounds=bounds)
 
 
 @attrs.frozen(kw_only=True, eq=False)

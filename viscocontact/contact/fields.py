@@ -16,12 +16,15 @@ are fitted on the elements next to each edge to the element averages of
 """
 from __future__ import annotations
 
-from typing import Any
+import contextlib
+import threading
+from typing import Any, Callable, Iterator
 
 import attrs
 import numpy as np
 from scipy.linalg import lu_factor, lu_solve
 
+from .._threads import alongside
 from ..kernels.prepared import element_integrals
 from .mesh import Mesh
 
@@ -131,6 +134,37 @@ class FieldSolution:
         return u if self.loads is None else u + self.loads.displacement(kernel, x)
 
 
+_beside = threading.local()     # a task for the next factorisation (:func:`beside_factorisation`)
+
+
+@contextlib.contextmanager
+def beside_factorisation(task: Callable[[], object]) -> Iterator[None]:
+    """Run ``task()`` while the next influence matrix in this block is factorised
+    (:func:`solve_fields`), on the other core (:func:`viscocontact._threads.alongside`).
+
+    The orchestrator prepares there what the residuals will need and the factorisation does
+    not (the finite-δX borders' integrals), through any adhesion model's ``field_solution``
+    that factorises with :func:`solve_fields`. The task runs at most once; if no factorisation
+    happens in the block, or there is one thread, it does not run, and whatever it would have
+    prepared is computed when it is needed.
+    """
+    before = getattr(_beside, "task", None)
+    _beside.task = task
+    try:
+        yield
+    finally:
+        _beside.task = before
+
+
+def factorise(matrix: np.ndarray):
+    """``lu_factor(matrix)``, with the task of :func:`beside_factorisation` run beside it."""
+    task = getattr(_beside, "task", None)
+    if task is None:
+        return lu_factor(matrix, check_finite=False)
+    _beside.task = None
+    return alongside(lambda: lu_factor(matrix, check_finite=False), task)
+
+
 def solve_fields(mesh: Mesh, kernel, shape: NormalizedProfile, *, penetration=None,
                  mean_pressure=None, antisymmetric: bool = False) -> FieldSolution:
     """Solve eq. 4.31 on ``mesh`` in penetration or load control (exactly one given).
@@ -147,7 +181,7 @@ def solve_fields(mesh: Mesh, kernel, shape: NormalizedProfile, *, penetration=No
         B += kernel.mean * mesh.width
     else:
         B = kernel.influence(mesh.mid, mesh.left, mesh.right)
-    lu = lu_factor(B, check_finite=False)
+    lu = factorise(B)
     rhs0 = shape.heights(mesh.mid) - 1.0
     h = mesh.width
     if penetration is not None:

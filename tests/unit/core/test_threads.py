@@ -101,3 +101,88 @@ def test_a_forked_child_splits_without_the_parents_pool():
         os.close(read)
         os.waitpid(pid, 0)
     assert np.array_equal(got, np.full(10, 2))
+
+
+@pytest.mark.parametrize("n, m", [(170, 23), (345, 48), (700, 97), (1054, 231), (1384, 484)])
+def test_solve_columns_gives_the_same_bits_on_one_thread_and_on_two(n, m):
+    """The parts are fixed by the column count, so the thread count changes no bit; and the
+    parts (multiples of 12 columns) solve the system as one solve does."""
+    from scipy.linalg import lu_factor, lu_solve
+
+    rng = np.random.default_rng(n)
+    lu = lu_factor(rng.standard_normal((n, n)) + n ** 0.5 * np.eye(n))
+    c = rng.standard_normal((n, m))
+    pivots = lu[1].copy()
+    set_threads(1)
+    one = _threads.solve_columns(lu, c)
+    set_threads(2)
+    two = _threads.solve_columns(lu, c)
+    assert np.array_equal(one, two)
+    assert one.flags.f_contiguous                 # as LAPACK returns a solve
+    whole = lu_solve(lu, c)
+    assert np.max(np.abs(one - whole)) <= 1e-12 * np.max(np.abs(whole))
+    assert np.array_equal(lu[1], pivots)           # the caller's pivots untouched
+
+
+def test_solve_columns_parts_are_multiples_of_the_unit_and_cover_every_column(monkeypatch):
+    from scipy import linalg
+
+    seen = []
+    real = linalg.lu_solve
+
+    def spy(lu_and_piv, b, **kw):
+        seen.append(b.shape[1] if b.ndim == 2 else 1)
+        return real(lu_and_piv, b, **kw)
+
+    monkeypatch.setattr(linalg, "lu_solve", spy)
+    rng = np.random.default_rng(0)
+    lu = linalg.lu_factor(rng.standard_normal((60, 60)) + 8 * np.eye(60))
+    set_threads(2)
+    _threads.solve_columns(lu, rng.standard_normal((60, 101)))
+    assert sorted(seen) == [41, 60] and 60 % _threads.COLUMN_UNIT == 0
+    seen.clear()
+    _threads.solve_columns(lu, rng.standard_normal((60, _threads.SPLIT_COLUMNS - 1)))
+    assert seen == [_threads.SPLIT_COLUMNS - 1]   # few columns: one solve
+
+
+def test_alongside_runs_the_task_here_alone_while_the_work_runs_elsewhere():
+    import threading
+
+    set_threads(2)
+    seen = {}
+
+    def work():
+        seen["work"] = threading.current_thread().name
+        return 42
+
+    def task():
+        seen["task"] = (threading.current_thread().name, threads())
+
+    assert _threads.alongside(work, task) == 42
+    here = threading.current_thread().name
+    assert seen["task"] == (here, 1)              # unsplit while beside the work
+    assert seen["work"] != here
+    assert threads() == 2                         # and split again afterwards
+    set_threads(1)
+    seen.clear()
+    assert _threads.alongside(work, task) == 42   # one thread: the work alone
+    assert "task" not in seen and seen["work"] == here
+
+
+def test_an_error_of_the_task_is_raised_once_the_work_is_done():
+    import time
+
+    set_threads(2)
+    done = []
+
+    def work():
+        time.sleep(0.05)
+        done.append(True)
+
+    def task():
+        raise RuntimeError("task failed")
+
+    with pytest.raises(RuntimeError, match="task failed"):
+        _threads.alongside(work, task)
+    assert done == [True]
+    assert threads() == 2

@@ -10,11 +10,15 @@ this contact set.
 """
 from __future__ import annotations
 
+import contextlib
+
 import attrs
 import numpy as np
 
+from ..._threads import threads
 from ...adhesion.base import AdhesionLimitation
-from ...contact.edges import EdgeContext
+from ...contact.edges import EdgeContext, border_geometry
+from ...contact.fields import beside_factorisation
 from ...contact.mesh import build_mesh, zone_patterns
 from ...contact.sensitivity import FieldSensitivity
 from ...contact.topology import TopologyChange, repair
@@ -112,11 +116,23 @@ class EdgeSystem:
             raise TopologyChange(reason, new, full)
         prep = self.prep
         mesh = build_mesh(x, self.spec, self.zones, self.counts)
+        # the borders' new rows and columns need the mesh alone: on two cores they are
+        # computed while the influence matrix is factorised (the same numbers either way)
+        advances = self.adhesion.bordered_advances(mesh) if threads() > 1 else []
+        prepared: dict = {}
+        if advances:
+            def task():
+                prepared["geometry"] = border_geometry(mesh, prep.kernel, prep.shape, self.spec,
+                                                       advances)
+            beside = beside_factorisation(task)
+        else:
+            beside = contextlib.nullcontext()
         # a finite edge advance: the energy balance needs the kernel's non-reciprocal part too
         try:
-            fields = self.adhesion.field_solution(
-                mesh, prep.kernel, prep.shape, self.control.fields_kwargs(),
-                antisymmetric=self.adhesion.edge_advance() > 0, previous=self._previous)
+            with beside:
+                fields = self.adhesion.field_solution(
+                    mesh, prep.kernel, prep.shape, self.control.fields_kwargs(),
+                    antisymmetric=self.adhesion.edge_advance() > 0, previous=self._previous)
         except AdhesionLimitation as exc:
             # a point the model cannot handle: invalid for the solver, which steps back
             self.limitation = str(exc)
@@ -127,7 +143,7 @@ class EdgeSystem:
             return None, None, r
         self._previous = fields
         ctx = EdgeContext(fields, prep.kernel, prep.shape, self.spec, prep.shape.amplitude,
-                          self.zones, self.counts)
+                          self.zones, self.counts, geometry=prepared.get("geometry"))
         r = self.adhesion.residuals(ctx)
         self.evaluations += 1
         self.cache = {key: (fields, ctx, r)}
