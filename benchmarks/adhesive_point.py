@@ -10,10 +10,12 @@ default mesh and the default solver of an adhesive scene (Broyden), from first t
 
 The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one BLAS thread
 (median of five), measured in the same run so that the ratio does not depend on the machine's
-load. The solves run BLAS on one thread too; their influence loop splits its rows between the
-threads of ``--threads`` (default ``VISCOCONTACT_THREADS`` or the cores). Prints one line per
-seed and the median; ``--profile FILE`` writes the cProfile statistics of the first seed to FILE
-instead of timing the rest.
+load. The solves run BLAS on one thread too; with the threads of ``--threads`` (default
+``VISCOCONTACT_THREADS`` or the cores) their influence loop splits its rows, the finite-δX
+borders' solves split their columns, and the borders' rows and columns are computed while the
+matrix is factorised (``docs/performance.md`` §13-14; the same bits on any count). Prints one
+line per seed and the median; ``--profile FILE`` writes the cProfile statistics of the first
+seed to FILE instead of timing the rest.
 
 Before the timed solves a small adhesive sinusoid is solved once and its time printed as the
 process's start: the package's imports, numba and its cached machine code (0.6-1 s), which a
@@ -84,8 +86,8 @@ def main(argv=None) -> None:
     ap.add_argument("--cold", action="store_true",
                     help="no warm-up solve: the first seed pays the process's start")
     ap.add_argument("--threads", type=int, default=None,
-                    help="threads of the influence loop (default: VISCOCONTACT_THREADS or the "
-                         "cores; the dense solve always has one BLAS thread)")
+                    help="threads of a solve (default: VISCOCONTACT_THREADS or the cores; the "
+                         "dense solve always has one BLAS thread)")
     args = ap.parse_args(argv)
     from viscocontact._threads import set_threads, threads
     from viscocontact.solvers import Broyden, Newton
