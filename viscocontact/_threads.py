@@ -50,6 +50,7 @@ _lock = threading.Lock()
 _count: int | None = None
 _pool: ThreadPoolExecutor | None = None
 _side: ThreadPoolExecutor | None = None     # the one thread of :func:`alongside`
+_side_free = threading.Lock()               # held while the side thread works
 _alone = threading.local()                  # this thread runs beside another's work
 _pool_size = 0
 
@@ -166,29 +167,34 @@ def alongside(work: Callable[[], T], task: Callable[[], object]) -> T:
     For work that holds one core and releases the GIL (a LAPACK factorisation) and a task whose
     result is cached for later and would otherwise be computed after it: the task changes no
     result, only when it is computed. An exception of the task is raised once the work is done.
+    When the side thread is busy (solves in several threads of one process), ``work()`` runs
+    here and the task not at all, rather than wait in a queue.
     """
-    if threads() < 2:
-        return work()
     global _side
-    with _lock:
-        if _side is None:
-            _side = ThreadPoolExecutor(max_workers=1, thread_name_prefix="viscocontact-side")
-        side = _side
-    future = side.submit(work)
-    _alone.on = True
+    if threads() < 2 or not _side_free.acquire(blocking=False):
+        return work()
     try:
-        task()
+        with _lock:
+            if _side is None:
+                _side = ThreadPoolExecutor(max_workers=1, thread_name_prefix="viscocontact-side")
+            side = _side
+        future = side.submit(work)
+        _alone.on = True
+        try:
+            task()
+        finally:
+            _alone.on = False
+            result = future.result()
     finally:
-        _alone.on = False
-        result = future.result()
+        _side_free.release()
     return result
 
 
 def _forget_pool() -> None:
     """In a forked child: the parent's pool threads do not exist there, so start afresh (a task
     sent to the inherited pool would never run)."""
-    global _pool, _pool_size, _lock, _side
-    _pool, _pool_size, _lock, _side = None, 0, threading.Lock(), None
+    global _pool, _pool_size, _lock, _side, _side_free
+    _pool, _pool_size, _lock, _side, _side_free = None, 0, threading.Lock(), None, threading.Lock()
 
 
 if hasattr(os, "register_at_fork"):

@@ -41,6 +41,11 @@ Contract for implementers
    cohesive stress acting below a gap (Dugdale); the spectral method's uniform grid applies it
    cell by cell (:mod:`viscocontact.methods.spectral.cohesive`). A model without one (the
    default, ``None``) has no grid form: its adhesive scenes need the boundary-element method.
+9. Optionally, :meth:`bordered_advances` names the edge advances ``(edge, δX)`` whose bordered
+   fields (:meth:`EdgeContext.border <viscocontact.contact.edges.EdgeContext.border>`)
+   :meth:`residuals` will ask for on a mesh; on two cores their new rows and columns are then
+   computed while the influence matrix is factorised. The result is the same either way; the
+   default names none.
 
 Every method receives an :class:`~viscocontact.contact.edges.EdgeContext`, which computes
 stress-intensity factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
@@ -103,9 +108,9 @@ class AdhesionModel(abc.ABC):
     def bordered_advances(self, mesh) -> list[tuple[int, float]]:
         """The ``(edge, δX)`` whose bordered fields (:meth:`EdgeContext.border
         <viscocontact.contact.edges.EdgeContext.border>`) :meth:`residuals` will ask for on
-        ``mesh``; none by default. Optional: what is named here is prepared while the influence
-        matrix is factorised, on the other core, and anything else when asked for, with the
-        same result."""
+        ``mesh``; none by default (contract item 9). What is named here is prepared while the
+        influence matrix is factorised, on the other core, and anything else when asked for,
+        with the same result."""
         return []
 
     @property

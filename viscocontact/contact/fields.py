@@ -139,8 +139,9 @@ _beside = threading.local()     # a task for the next factorisation (:func:`besi
 
 @contextlib.contextmanager
 def beside_factorisation(task: Callable[[], object]) -> Iterator[None]:
-    """Run ``task()`` while the next influence matrix in this block is factorised
-    (:func:`solve_fields`), on the other core (:func:`viscocontact._threads.alongside`).
+    """Run ``task()`` in this thread while the next influence matrix in this block is
+    factorised (:func:`solve_fields`) on another, so that the two share two cores
+    (:func:`viscocontact._threads.alongside`).
 
     The orchestrator prepares there what the residuals will need and the factorisation does
     not (the finite-δX borders' integrals), through any adhesion model's ``field_solution``

@@ -186,3 +186,30 @@ def test_an_error_of_the_task_is_raised_once_the_work_is_done():
         _threads.alongside(work, task)
     assert done == [True]
     assert threads() == 2
+
+
+def test_a_busy_side_thread_makes_the_work_run_here_without_the_task():
+    """Solves in several threads of one process do not queue their factorisations behind one
+    another on the side thread: a second caller meanwhile factorises in its own thread."""
+    import threading
+
+    set_threads(2)
+    started, release = threading.Event(), threading.Event()
+    seen = {}
+
+    def slow_work():
+        started.set()
+        release.wait(10)
+        return "first"
+
+    first = threading.Thread(target=lambda: seen.setdefault(
+        "first", _threads.alongside(slow_work, lambda: None)))
+    first.start()
+    assert started.wait(10)
+    here = threading.current_thread().name
+    got = _threads.alongside(lambda: (threading.current_thread().name, "second"),
+                             lambda: seen.setdefault("task", True))
+    release.set()
+    first.join(10)
+    assert got == (here, "second") and "task" not in seen
+    assert seen["first"] == "first"
