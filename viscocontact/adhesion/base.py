@@ -108,9 +108,9 @@ class AdhesionModel(abc.ABC):
     def bordered_advances(self, mesh) -> list[tuple[int, float]]:
         """The ``(edge, δX)`` whose bordered fields (:meth:`EdgeContext.border
         <viscocontact.contact.edges.EdgeContext.border>`) :meth:`residuals` will ask for on
-        ``mesh``; none by default (contract item 9). What is named here is prepared while the
-        influence matrix is factorised, on the other core, and anything else when asked for,
-        with the same result."""
+        ``mesh``; none by default (contract item 9). On two cores, what is named here is
+        prepared while the influence matrix is factorised, and anything else when asked for,
+        with the same result: a wrong list costs time, never a number."""
         return []
 
     @property

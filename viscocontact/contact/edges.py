@@ -227,7 +227,7 @@ class EdgeContext:
         """``(δŨ/δX̃, δL̃_P/δX̃)`` on the base mesh bordered by new elements over ``dx``.
 
         The enlarged contact keeps every base element and gains the ``n`` elements of
-        :meth:`_new_elements` that cover ``[X - δX, X]`` (left edge) or ``[X, X + δX]`` (right
+        :func:`new_elements` that cover ``[X - δX, X]`` (left edge) or ``[X, X + δX]`` (right
         edge); near the new edge it is then meshed as a fresh zone would be. The bordered system
         ``[[B, c], [r, d]]`` is solved through its ``n x n`` Schur complement with the base
         factorisation, and only the ``2n`` new rows and columns of the influence and
@@ -374,6 +374,9 @@ class BorderGeometry:
         ``(edge, δX) -> (n, n)`` influence of each advance's new elements on each other.
     heights : (Σn,) array
         ``r̃ - 1`` at the new collocation points.
+    bounds : array
+        Where each key's columns start in ``c`` (and end: the next entry), in the order of
+        ``new``.
     """
 
     elements: dict
