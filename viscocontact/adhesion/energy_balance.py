@@ -57,9 +57,6 @@ class EnergyBalance(AdhesionModel):
             return []
         return [(i, self._advance_at(mesh.edges, i)[0]) for i in range(len(mesh.edges))]
 
-    def _advance(self, ctx, i: int) -> float:
-        return self._advance_at(ctx.mesh.edges, i)[0]
-
     def _advance_and_slope(self, ctx, i: int):
         return self._advance_at(ctx.mesh.edges, i)
 
@@ -108,8 +105,9 @@ class EnergyBalance(AdhesionModel):
             du = total - dlp
             used[:] = 0.0
             return du, dlp, used
-        used[:] = [self._advance(ctx, i) for i in range(n)]
-        ctx.prepare_borders(enumerate(used))
+        advances = self.bordered_advances(ctx.mesh)
+        ctx.prepare_borders(advances)
+        used[:] = [dx for _, dx in advances]
         for i in range(n):
             du[i], dlp[i] = ctx.energy_release(i, used[i])
         sign = np.where(k >= 0, 1.0, -1.0)

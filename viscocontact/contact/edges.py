@@ -57,6 +57,12 @@ MIN_BORDER = 8
 GROUP_ELEMENTS = 160
 
 
+def dissipative(kernel) -> bool:
+    """Whether ``kernel`` has a non-reciprocal part (memory branches or a layer correction):
+    without one, δL_P vanishes identically."""
+    return len(kernel.weights) > 0 or kernel.correction is not None
+
+
 def outward(edges: np.ndarray, i: int, dx: float) -> np.ndarray:
     """Edges with edge ``i`` moved outward by ``dx`` (left edges to the left, right to the right)."""
     out = np.array(edges, dtype=float)
@@ -92,9 +98,8 @@ class EdgeContext:
 
     @property
     def dissipative(self) -> bool:
-        """Whether the kernel has a non-reciprocal part (memory branches or a layer correction):
-        without one, δL_P vanishes identically."""
-        return len(self.kernel.weights) > 0 or self.kernel.correction is not None
+        """:func:`dissipative` of the kernel."""
+        return dissipative(self.kernel)
 
     @property
     def edge_compliance(self) -> float:
@@ -211,10 +216,6 @@ class EdgeContext:
         d_lp = self.nonconservative_work(self.fields, after)
         return d_u / dx, d_lp / dx
 
-    def _new_elements(self, i: int, dx: float):
-        """:func:`new_elements` of this context's mesh."""
-        return new_elements(self.mesh, self.spec, i, dx)
-
     def _base_products(self):
         """``A σ⁻`` and ``(h σ⁻)ᵀ A`` of the base field with the antisymmetric matrix (cached)."""
         if getattr(self, "_aprod", None) is None:
@@ -257,37 +258,29 @@ class EdgeContext:
         """Compute the bordered fields of every ``(edge, δX)`` in ``advances`` at once (one
         evaluation of the new rows and columns and one multiple right-hand-side solve for all
         edges instead of one per edge) and cache them for :meth:`border`. The new rows and
-        columns are the ``geometry`` given to the context when it has them (prepared while the
-        base matrix was factorised), else computed here."""
+        columns are the ``geometry`` given to the context when it was prepared for exactly these
+        advances (while the base matrix was factorised), else computed here."""
         todo = [(int(i), float(dx)) for i, dx in advances if (int(i), float(dx)) not in
                 self._borders]
         if not todo:
             return
         geometry = self._geometry
-        if geometry is None or not geometry.covers(todo):
+        if geometry is None or list(geometry.elements) != todo:
             geometry = border_geometry(self.mesh, self.kernel, self.shape, self.spec, todo)
         from scipy.linalg import lu_factor, lu_solve
 
         from .._threads import solve_columns
 
-        new = [key for key in todo if geometry.elements[key] is not None]
-        for key in todo:
-            if geometry.elements[key] is None:
+        for key, elements in geometry.elements.items():
+            if elements is None:
                 self._borders[key] = None
+        new = geometry.new
         if not new:
             return
         base, mesh = self.fields, self.mesh
-        parts = [geometry.part(key) for key in new]
-        if new == geometry.new:
-            c, r, cols, rows = geometry.c, geometry.r, geometry.cols, geometry.rows
-            heights = geometry.heights
-        else:       # a subset: its columns and rows, in the order of ``new``
-            take = np.concatenate([np.arange(sl.start, sl.stop) for sl in parts])
-            c, r, heights = geometry.c[:, take], geometry.r[take], geometry.heights[take]
-            cols = None if geometry.cols is None else geometry.cols[:, take]
-            rows = None if geometry.rows is None else geometry.rows[take]
-        bounds = np.cumsum([0] + [sl.stop - sl.start for sl in parts])
-        w_new = heights + base.penetration
+        c, r, cols, rows = geometry.c, geometry.r, geometry.cols, geometry.rows
+        bounds = geometry.bounds
+        w_new = geometry.heights + base.penetration
         Y = solve_columns(base.lu, c)                        # (N, Σn), on the cores
         w_old = base.rhs0 + base.penetration
         hsig = mesh.width * base.sigma
@@ -389,14 +382,6 @@ class BorderGeometry:
     heights: np.ndarray
     bounds: np.ndarray
 
-    def covers(self, keys) -> bool:
-        return all(key in self.elements for key in keys)
-
-    def part(self, key) -> slice:
-        """The columns of ``key``'s new elements."""
-        n = self.new.index(key)
-        return slice(int(self.bounds[n]), int(self.bounds[n + 1]))
-
 
 def border_geometry(mesh: Mesh, kernel, shape: NormalizedProfile, spec: MeshSpec,
                     advances) -> BorderGeometry:
@@ -415,11 +400,11 @@ def border_geometry(mesh: Mesh, kernel, shape: NormalizedProfile, spec: MeshSpec
                               r=np.empty((0, n)), cols=None, rows=None, blocks={},
                               heights=np.empty(0), bounds=bounds)
     k = kernel
-    dissipative = len(k.weights) > 0 or k.correction is not None
+    nonreciprocal = dissipative(k)
     a = np.concatenate([elements[key][0] for key in new])
     b = np.concatenate([elements[key][1] for key in new])
     xi = 0.5 * (a + b)
-    pair = getattr(k, "antiderivative_pair", None) if dissipative else None
+    pair = getattr(k, "antiderivative_pair", None) if nonreciprocal else None
     cols = rows = None
     if pair is not None:      # influence and antisymmetric integrals share the table look-ups
         c, cols = element_integrals(pair, mesh.mid, a, b)
@@ -429,7 +414,7 @@ def border_geometry(mesh: Mesh, kernel, shape: NormalizedProfile, spec: MeshSpec
     else:
         c = k.influence(mesh.mid, a, b)                      # (N, n)
         r = k.influence(xi, mesh.left, mesh.right)          # (n, N)
-        if dissipative:
+        if nonreciprocal:
             E = k.even_antiderivative
             cols = element_integrals(E, mesh.mid, a, b)      # rows: base, columns: new
             rows = element_integrals(E, xi, mesh.left, mesh.right)   # new, base

@@ -33,7 +33,7 @@ import numpy as np
 from scipy.linalg import lu_solve
 
 from ..kernels.prepared import pairwise
-from .edges import Border, sif_calibration
+from .edges import Border, dissipative, sif_calibration
 from .fields import _POWERS, N_FIT, _avg_power, edge_rows
 from .mesh import contact_spec, element_counts, graded_nodes
 
@@ -166,7 +166,7 @@ class FieldSensitivity:
 
     @property
     def dissipative(self) -> bool:
-        return len(self.kernel.weights) > 0 or self.kernel.correction is not None
+        return dissipative(self.kernel)
 
     @functools.cached_property
     def rhs(self) -> np.ndarray:

@@ -51,9 +51,9 @@ def test_one_and_two_threads_give_the_same_residuals_and_derivatives(solve, load
     assert out[2][5]._geometry is not None        # two: beside the factorisation
 
 
-def test_borders_of_some_advances_from_the_prepared_geometry_of_all(solve):
-    """A context whose prepared geometry covers more advances than asked for takes their
-    columns and rows; the bordered fields equal those computed from scratch."""
+def test_borders_of_some_advances_beside_a_geometry_prepared_for_all(solve):
+    """A context whose geometry was prepared for other advances than those asked for computes
+    the borders afresh: the bordered fields equal those of a context without one."""
     set_threads(1)
     system = solve.equilibrium.system(Control.penetration_of(0.35), EDGES)
     fields, ctx, _ = system.evaluate(EDGES)

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from viscocontact.contact.edges import MIN_BORDER, EdgeContext
+from viscocontact.contact.edges import MIN_BORDER, EdgeContext, new_elements
 from viscocontact.contact.fields import NormalizedProfile, solve_fields
 from viscocontact.contact.mesh import ALIGN_MAX, MeshSpec, build_mesh, zone_patterns
 from viscocontact.kernels import HalfPlane
@@ -27,7 +27,7 @@ def _context(edges, zeta=1e-2, smallest=1e-5, advance=1e-4, elements=64, rheolog
 
 def test_an_aligned_zone_borders_with_its_equal_elements():
     ctx = _context([-0.9, 1.0])
-    left, right = ctx._new_elements(1, 1e-4)
+    left, right = new_elements(ctx.mesh, ctx.spec, 1, 1e-4)
     assert len(left) == 10 and np.allclose(right - left, 1e-5, rtol=1e-9)
     assert left[0] == ctx.mesh.edges[1] and right[-1] == pytest.approx(ctx.mesh.edges[1] + 1e-4)
 
@@ -35,7 +35,7 @@ def test_an_aligned_zone_borders_with_its_equal_elements():
 def test_a_long_advance_is_graded_not_thousands_of_equal_elements():
     """δX = 1e4 edge elements: graded from both ends (the equal split once hung the solver)."""
     ctx = _context([-0.9, 1.0], smallest=1e-6, advance=1e-2)
-    left, right = ctx._new_elements(0, 1e-2)
+    left, right = new_elements(ctx.mesh, ctx.spec, 0, 1e-2)
     sizes = right - left
     assert len(sizes) < 200                   # 94: 47 from each end at ratio 1.15
     assert sizes.sum() == pytest.approx(1e-2, rel=1e-12)
@@ -46,7 +46,7 @@ def test_a_long_advance_is_graded_not_thousands_of_equal_elements():
 def test_an_advance_of_a_few_edge_elements_is_re_meshed():
     ctx = _context([-0.9, 1.0], smallest=None, advance=None)      # no zones: coarse edge
     h = ctx.mesh.width[0]
-    assert ctx._new_elements(0, 0.5 * MIN_BORDER * h) is None
+    assert new_elements(ctx.mesh, ctx.spec, 0, 0.5 * MIN_BORDER * h) is None
     assert ctx.bordered_release(0, 0.5 * MIN_BORDER * h) is None
 
 

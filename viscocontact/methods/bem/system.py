@@ -15,7 +15,6 @@ import contextlib
 import attrs
 import numpy as np
 
-from ..._threads import threads
 from ...adhesion.base import AdhesionLimitation
 from ...contact.edges import EdgeContext, border_geometry
 from ...contact.fields import beside_factorisation
@@ -118,15 +117,13 @@ class EdgeSystem:
         mesh = build_mesh(x, self.spec, self.zones, self.counts)
         # the borders' new rows and columns need the mesh alone: on two cores they are
         # computed while the influence matrix is factorised (the same numbers either way)
-        advances = self.adhesion.bordered_advances(mesh) if threads() > 1 else []
+        advances = self.adhesion.bordered_advances(mesh)
         prepared: dict = {}
-        if advances:
-            def task():
-                prepared["geometry"] = border_geometry(mesh, prep.kernel, prep.shape, self.spec,
-                                                       advances)
-            beside = beside_factorisation(task)
-        else:
-            beside = contextlib.nullcontext()
+
+        def task():
+            prepared["geometry"] = border_geometry(mesh, prep.kernel, prep.shape, self.spec,
+                                                   advances)
+        beside = beside_factorisation(task) if advances else contextlib.nullcontext()
         # a finite edge advance: the energy balance needs the kernel's non-reciprocal part too
         try:
             with beside:
