@@ -70,7 +70,8 @@ class ContactProblem:
         Taken from where ``solver`` stopped when it does not converge. The default, a bisection
         march that grows its step until the residual changes sign (thesis §4.5.4), follows an edge
         past a fold of its balance (a trailing adhesive neck that runs until it merges with the
-        next contact), where Newton-type steps stall.
+        next contact), where Newton-type steps stall; once it has brought ``max|r|`` a
+        hundredfold below its largest, it finishes with Newton steps (``newton_below``).
     method : SolutionMethod
         How the equilibrium is computed (default: the boundary-element method,
         :class:`~viscocontact.methods.bem.BEM`).
@@ -90,7 +91,7 @@ class ContactProblem:
     kernel_tolerance: float | None = attrs.field(
         default=None, validator=attrs.validators.optional(in_range(0.0, 1e-2, lo_open=True)))
     fallback: NonlinearSolver | None = attrs.field(
-        factory=lambda: Bisection(initial_step=2e-3, growth=1.5))
+        factory=lambda: Bisection(initial_step=2e-3, growth=1.5, newton_below=1e-2))
     method: SolutionMethod = attrs.field(factory=lambda: _default_method(),
                                          # attrs' instance_of is typed for concrete classes
                                          validator=attrs.validators.instance_of(

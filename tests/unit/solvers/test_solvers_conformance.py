@@ -18,7 +18,7 @@ from viscocontact.testing.strategies_solvers import (CoupledPair, InjectedError,
     Newton(), Newton(difference="central", damping=False), Broyden(),
     Broyden(relaxation=0.6, restart=False), NonlinearCG(),
     NonlinearCG(beta="fletcher-reeves", line_search="wolfe"), Bisection(),
-    Bisection(growth=2.0, shrink=0.4)], ids=repr)
+    Bisection(growth=2.0, shrink=0.4), Bisection(newton_below=1e-2)], ids=repr)
 def test_builtin_solvers_conform(solver):
     check_solver(solver)
 
