@@ -161,8 +161,8 @@ def test_stored_elastic_energy_is_never_negative(log_zeta, p):
 def test_the_default_fallback_finishes_with_newton_on_the_march_s_equilibrium():
     # a small rough adhesive scene whose nonlinear CG hands over to the fallback march: the
     # default march finishes with Newton steps (Bisection.newton_below) and must land on the
-    # equilibrium the march alone reaches (measured: edges 1.8e-11 apart, 417 evaluations
-    # instead of 510)
+    # equilibrium the march alone reaches (measured: edges 1.6e-11 apart, area and friction
+    # within 2e-11, 405 evaluations instead of 507)
     from viscocontact.methods.bem.meshing import Discretization
     from viscocontact.profiles import SelfAffineProfile
 

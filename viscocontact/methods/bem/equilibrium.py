@@ -17,7 +17,7 @@ from ...contact.topology import TopologyChange, repair
 from .checks import tensile_split
 from .sets import MIN_GAP, MIN_WIDTH, Control
 from .state import Outcome, State
-from .system import EdgeSystem
+from .system import EdgeSystem, Evaluations
 
 #: A merged adhesionless contact whose tension, at most this fraction of the largest pressure,
 #: and split alternate is refined (the sign of a nearly vanishing pressure is below the mesh's
@@ -58,6 +58,7 @@ class Equilibrium:
         self.checks = checks
         self.log = log
         self._noise: dict[tuple, float] = {}      # round-off floor per (edges, elements)
+        self._evaluations = Evaluations()         # shared by the systems of its solves
         #: the last reason the adhesion model gave for a contact set it does not handle, in any
         #: system of this solve (None: none met)
         self.limitation: str | None = None
@@ -88,7 +89,7 @@ class Equilibrium:
         if counts is None:
             counts = self.policy.counts_for(edges)
         return EdgeSystem(self.prep, self.spec, self.adhesion, control, edges, counts,
-                          on_limitation=self._limited)
+                          on_limitation=self._limited, shared=self._evaluations)
 
     def _limited(self, reason: str) -> None:
         self.limitation = reason

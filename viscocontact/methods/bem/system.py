@@ -18,7 +18,7 @@ import numpy as np
 from ...adhesion.base import AdhesionLimitation
 from ...contact.edges import EdgeContext, border_geometry
 from ...contact.fields import beside_factorisation
-from ...contact.mesh import build_mesh, zone_patterns
+from ...contact.mesh import build_mesh, same_zones, zone_patterns
 from ...contact.sensitivity import FieldSensitivity
 from ...contact.topology import TopologyChange, repair
 from ...deadline import check as check_deadline
@@ -42,6 +42,42 @@ def residual_scale(kernel) -> float:
     """
     k1 = abs(complex(kernel.compliance(1.0)))
     return max(1.0, 1.0 / k1) if k1 > 0 and np.isfinite(k1) else 1.0
+
+
+class Evaluations:
+    """The last few evaluations of the edge systems of one equilibrium solver, shared between
+    them: a new system asked for a point that another one of the same control, element counts
+    and edge zones has just evaluated takes that evaluation instead of computing it again (the
+    same arithmetic, so the same numbers). The approach evaluates such points when a new
+    system starts where another stopped: after contacts are born and grown (the grown edges,
+    then the round-off floor's measurement there), and when a fold is crossed.
+
+    An evaluation holds its factorisation, so only :data:`EVALUATIONS_KEPT` are kept; points the
+    adhesion model rejects are not shared (their reason belongs to the system that met them).
+    """
+
+    def __init__(self, size: int | None = None):
+        self.size = EVALUATIONS_KEPT if size is None else size
+        self._entries: list = []     # (x bytes, control, counts, zones, (fields, ctx, r))
+
+    def find(self, key: bytes, control, counts, zones):
+        """The evaluation stored for this point, or None."""
+        for n, entry in enumerate(self._entries):
+            k, c, n_, z, out = entry
+            if k == key and c == control and n_ == counts and same_zones(z, zones):
+                self._entries.append(self._entries.pop(n))      # the latest used last
+                return out
+        return None
+
+    def keep(self, key: bytes, control, counts, zones, out) -> None:
+        """Store an evaluation, forgetting the oldest beyond :attr:`size`."""
+        self._entries.append((key, control, counts, zones, out))
+        del self._entries[:-self.size]
+
+
+#: Evaluations kept by :class:`Evaluations` (each holds the LU of its mesh: 33 MB at 2000
+#: elements).
+EVALUATIONS_KEPT = 3
 
 
 @attrs.frozen(kw_only=True, eq=False)
@@ -81,9 +117,13 @@ class EdgeSystem:
     on_limitation : callable, optional
         Called with the reason whenever the adhesion model rejects a point
         (:class:`~viscocontact.adhesion.base.AdhesionLimitation`).
+    shared : Evaluations, optional
+        Evaluations shared with the other systems of a solver (a point one of them has just
+        evaluated is taken from there).
     """
 
-    def __init__(self, prep, spec, adhesion, control, edges, counts, on_limitation=None):
+    def __init__(self, prep, spec, adhesion, control, edges, counts, on_limitation=None,
+                 shared: Evaluations | None = None):
         self.prep = prep
         self.spec = spec
         self.adhesion = adhesion
@@ -91,19 +131,21 @@ class EdgeSystem:
         self.n_edges = len(edges)
         self.counts = counts
         self.zones = zone_patterns(edges, spec, counts)
-        self.cache = {}
+        self.cache: dict = {}
         self.evaluations = 0
         self.last_valid = None      # last edge vector that was a valid contact set
         self._last_size = None      # max |r| where the previous Jacobian was taken
-        self._derivatives = None    # (x key, derivatives) of the last analytic Jacobian
+        self._derivatives: tuple | None = None   # (x key, derivatives) of the last Jacobian
         self._previous = None       # field of the last valid evaluation (a start for the model)
         #: why the adhesion model rejected the last point it could not handle (None: none yet)
         self.limitation: str | None = None
         self._on_limitation = on_limitation
+        self.shared = shared
 
     def evaluate(self, x):
-        """``(fields, ctx, r)`` at ``x`` (the last evaluation is cached). Every evaluation
-        checks the cooperative deadline (:mod:`viscocontact.deadline`)."""
+        """``(fields, ctx, r)`` at ``x`` (the last evaluation is cached, and those of the
+        :attr:`shared` ones). Every evaluation checks the cooperative deadline
+        (:mod:`viscocontact.deadline`)."""
         check_deadline()
         key = x.tobytes()
         if key in self.cache:
@@ -113,6 +155,13 @@ class EdgeSystem:
         new, changed, reason, full = repair(x, MIN_WIDTH, MIN_GAP)
         if changed:
             raise TopologyChange(reason, new, full)
+        if self.shared is not None:
+            out = self.shared.find(key, self.control, self.counts, self.zones)
+            if out is not None:
+                self._previous = out[0]
+                self.cache = {key: out}
+                self.last_valid = x.copy()
+                return out
         prep = self.prep
         mesh = build_mesh(x, self.spec, self.zones, self.counts)
         # the borders' new rows and columns need the mesh alone: on two cores they are
@@ -144,6 +193,8 @@ class EdgeSystem:
         r = self.adhesion.residuals(ctx)
         self.evaluations += 1
         self.cache = {key: (fields, ctx, r)}
+        if self.shared is not None:
+            self.shared.keep(key, self.control, self.counts, self.zones, (fields, ctx, r))
         self.last_valid = x.copy()
         return fields, ctx, r
 
