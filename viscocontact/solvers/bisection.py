@@ -59,7 +59,9 @@ class Bisection(NonlinearSolver):
       independent here.
     * Stops with ``Status.STALLED`` when ``s_i < tolerances.step`` for every unknown that is not
       yet converged. Convergence is linear (one bit per iteration once bracketed) but needs
-      neither Jacobian nor merit.
+      neither Jacobian nor merit; ``newton_below`` makes the end quadratic where the problem has
+      a Jacobian (with forward differences it costs ``n`` evaluations a step).
+    * A Newton step is one iteration; the result's ``extras["newton_steps"]`` counts them.
 
     Examples
     --------
