@@ -159,10 +159,7 @@ class EdgeSystem:
         if self.shared is not None:
             out = self.shared.find(key, self.control, self.counts, self.zones)
             if out is not None:
-                self._previous = out[0]
-                self.cache = {key: out}
-                self.last_valid = x.copy()
-                return out
+                return self._remember(key, x, out)
         prep = self.prep
         mesh = build_mesh(x, self.spec, self.zones, self.counts)
         # the borders' new rows and columns need the mesh alone: on two cores they are
@@ -193,11 +190,17 @@ class EdgeSystem:
                           self.zones, self.counts, geometry=prepared.get("geometry"))
         r = self.adhesion.residuals(ctx)
         self.evaluations += 1
-        self.cache = {key: (fields, ctx, r)}
         if self.shared is not None:
             self.shared.keep(key, self.control, self.counts, self.zones, (fields, ctx, r))
+        return self._remember(key, x, (fields, ctx, r))
+
+    def _remember(self, key: bytes, x, out: tuple) -> tuple:
+        """``out``, the valid evaluation at ``x``, as the last one: cached, and its field the
+        model's start for the next."""
+        self._previous = out[0]
+        self.cache = {key: out}
         self.last_valid = x.copy()
-        return fields, ctx, r
+        return out
 
     def residual(self, x):
         return self.evaluate(np.asarray(x, dtype=float))[2]
