@@ -105,7 +105,7 @@ def split_rows(run: Callable[[int, int], None], rows: int, coefficients: int) ->
     if n < 2 or coefficients < SPLIT_MIN:
         run(0, rows)
         return
-    pool = _executor(n - 1)
+    pool = executor(n - 1)
     bounds = [rows * k // n for k in range(n + 1)]
     futures = [pool.submit(run, bounds[k], bounds[k + 1]) for k in range(n - 1)]
     try:
@@ -149,7 +149,7 @@ def solve_columns(lu_and_piv, columns: np.ndarray) -> np.ndarray:
     if n < 2:
         run(parts)
         return out
-    pool = _executor(n - 1)
+    pool = executor(n - 1)
     futures = [pool.submit(run, parts[k::n]) for k in range(1, n)]
     try:
         run(parts[0::n])
@@ -190,6 +190,16 @@ def alongside(work: Callable[[], T], task: Callable[[], object]) -> T:
     return result
 
 
+def run_alone(task: Callable[[], T]) -> T:
+    """``task()`` with this thread's influence loops and solves unsplit (:func:`threads` is 1
+    here while it runs): for work done beside another thread's."""
+    _alone.on = True
+    try:
+        return task()
+    finally:
+        _alone.on = False
+
+
 def _forget_pool() -> None:
     """In a forked child: the parent's pool threads do not exist there, so start afresh (a task
     sent to the inherited pool would never run)."""
@@ -201,7 +211,8 @@ if hasattr(os, "register_at_fork"):
     os.register_at_fork(after_in_child=_forget_pool)
 
 
-def _executor(workers: int) -> ThreadPoolExecutor:
+def executor(workers: int) -> ThreadPoolExecutor:
+    """The process's pool of at least ``workers`` threads (shared by the splits above)."""
     global _pool, _pool_size
     with _lock:
         if _pool is None or _pool_size < workers:

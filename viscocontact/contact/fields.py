@@ -22,9 +22,9 @@ from typing import Any, Callable, Iterator
 
 import attrs
 import numpy as np
-from scipy.linalg import lu_factor, lu_solve
+from scipy.linalg import lu_solve
 
-from .._threads import alongside
+from .._lu import lu_factor as threaded_lu_factor
 from ..kernels.prepared import element_integrals
 from .mesh import Mesh
 
@@ -158,12 +158,11 @@ def beside_factorisation(task: Callable[[], object]) -> Iterator[None]:
 
 
 def factorise(matrix: np.ndarray):
-    """``lu_factor(matrix)``, with the task of :func:`beside_factorisation` run beside it."""
+    """``lu_factor(matrix)`` on the threads of the solve (:func:`viscocontact._lu.lu_factor`),
+    with the task of :func:`beside_factorisation` run beside it."""
     task = getattr(_beside, "task", None)
-    if task is None:
-        return lu_factor(matrix, check_finite=False)
     _beside.task = None
-    return alongside(lambda: lu_factor(matrix, check_finite=False), task)
+    return threaded_lu_factor(matrix, task)
 
 
 def solve_fields(mesh: Mesh, kernel, shape: NormalizedProfile, *, penetration=None,
