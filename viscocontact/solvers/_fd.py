@@ -129,11 +129,12 @@ class CountedResidual:
     """
 
     def __init__(self, problem: NonlinearProblem, budget: int, probation: int = 0,
-                 progress: float = 1e-2):
+                 progress: float = 1e-2, pace: tuple[float, ...] = ()):
         self._residual = problem.residual
         self.budget = budget
         self.probation = probation
         self.progress = progress
+        self.pace = tuple(pace) if probation else ()
         self.count = 0
         self._first = np.inf          # max|r| of the first call
         self._best = np.inf           # smallest max|r| of the calls after it
@@ -142,7 +143,8 @@ class CountedResidual:
     @classmethod
     def of(cls, problem: NonlinearProblem, tolerances: Tolerances) -> "CountedResidual":
         """The counter for a solve under ``tolerances``."""
-        return cls(problem, tolerances.max_evaluations, tolerances.probation, tolerances.progress)
+        return cls(problem, tolerances.max_evaluations, tolerances.probation, tolerances.progress,
+                   tolerances.pace)
 
     def __call__(self, x: np.ndarray) -> np.ndarray:
         if self.count >= self.budget:
@@ -153,6 +155,13 @@ class CountedResidual:
             self.stop = (Status.STALLED,
                          f"no progress in {self.probation} residual evaluations: max|r| "
                          f"{self._first:.3g} at the start, at best {self._best:.3g} since")
+            raise BudgetExhausted
+        j = self.count - 1                    # evaluations past the first so far
+        if 1 <= j <= len(self.pace) and not self._best <= self.pace[j - 1] * self._first:
+            self.stop = (Status.STALLED,
+                         f"too little progress in {j} residual evaluation(s): max|r| "
+                         f"{self._first:.3g} at the start, at best {self._best:.3g} since "
+                         f"(pace {self.pace[j - 1]:g})")
             raise BudgetExhausted
         self.count += 1
         r = np.asarray(self._residual(np.array(x, dtype=float)), dtype=float).reshape(-1)

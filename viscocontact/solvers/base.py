@@ -25,6 +25,7 @@ import attrs
 import numpy as np
 
 from .._validation import in_range, int_range
+from ..errors import ValidationError
 
 
 @attrs.frozen(kw_only=True)
@@ -51,6 +52,12 @@ class Tolerances:
         Honoured by the built-in solvers (:class:`~viscocontact.solvers._fd.CountedResidual`).
     progress : float
         The fraction of the first ``max|r|`` that ``probation`` asks for, in (0, 1).
+    pace : tuple of float
+        Earlier checkpoints of the probation (empty: none): the solve also stops as
+        ``Status.STALLED`` when, after ``j`` evaluations past the first (``j <= len(pace)``,
+        fewer than ``probation``), the smallest ``max|r|`` among them is above ``pace[j - 1]``
+        times the first one's. Each in (0, 1]. A solve that is not gaining at the start of its
+        probation stops there instead of at its end.
     """
 
     residual: float = attrs.field(default=1e-10, validator=in_range(0.0, lo_open=True))
@@ -60,6 +67,15 @@ class Tolerances:
     probation: int = attrs.field(default=0, validator=int_range(0))
     progress: float = attrs.field(default=1e-2, validator=in_range(0.0, 1.0, lo_open=True,
                                                                    hi_open=True))
+    pace: tuple[float, ...] = attrs.field(default=(), converter=tuple,
+                                          validator=attrs.validators.deep_iterable(
+                                              in_range(0.0, 1.0, lo_open=True)))
+
+    @pace.validator
+    def _pace_within_probation(self, attribute, value):
+        if value and len(value) >= max(self.probation, 1):
+            raise ValidationError("Tolerances.pace", value, f"fewer checkpoints than probation = "
+                                                 f"{self.probation}")
 
 
 @runtime_checkable

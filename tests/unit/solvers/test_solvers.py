@@ -182,6 +182,52 @@ def test_probation_options_are_validated(field, value):
         Tolerances(**{field: value})
 
 
+@pytest.mark.parametrize("pace, probation", [((0.0,), 4), ((1.5,), 4), ((0.9, 0.6), 2),
+                                             ((0.9,), 0)])
+def test_pace_is_validated(pace, probation):
+    with pytest.raises(ValidationError, match="Tolerances.pace"):
+        Tolerances(probation=probation, pace=pace)
+
+
+@pytest.mark.parametrize("solver", SOLVERS, ids=ids)
+def test_pace_stops_a_solve_without_progress_at_its_checkpoint(solver):
+    """``Tolerances.pace``: after one evaluation past the first without the gain the first
+    checkpoint asks for, the solve stops as STALLED before its third evaluation, and says so."""
+    tol = Tolerances(residual=1e-9, max_iterations=500, max_evaluations=3000, probation=4,
+                     progress=1e-2, pace=(0.5,))
+    rec = RecordingProblem(NoRoot())
+    res = solver.solve(rec, np.full(3, 0.5), tol)
+    assert res.status is Status.STALLED and not res.converged
+    sizes = [float(np.max(np.abs(NoRoot().residual(x)))) for x in rec.points]
+    if len(sizes) >= 2 and sizes[1] > 0.5 * sizes[0]:
+        assert rec.calls == res.function_evaluations == 2
+        assert "too little progress in 1 residual evaluation" in res.message
+
+
+@pytest.mark.parametrize("solver", VARIANTS, ids=ids)
+@pytest.mark.parametrize("name", sorted(PROBLEMS))
+def test_pace_leaves_solves_that_keep_it_alone(solver, name):
+    """On the reference problems a solve whose best ``max|r|`` after one and two evaluations
+    past the first is within the pace (0.9, 0.6) ends exactly as under the probation alone;
+    any other stops as STALLED at the first checkpoint it misses."""
+    problem, x0, _, _ = PROBLEMS[name]
+    free_rec = RecordingProblem(problem)
+    free = solver.solve(free_rec, x0, attrs.evolve(TOL, probation=4))
+    sizes = [float(np.max(np.abs(problem.residual(x)))) for x in free_rec.points]
+    paced = solver.solve(RecordingProblem(problem), x0, attrs.evolve(TOL, probation=4,
+                                                                     pace=(0.9, 0.6)))
+    missed = [j for j, limit in ((1, 0.9), (2, 0.6))
+              if len(sizes) > j + 1 and min(sizes[1:j + 1]) > limit * sizes[0]]
+    if not missed:
+        assert paced.status is free.status
+        assert paced.function_evaluations == free.function_evaluations
+        np.testing.assert_array_equal(paced.x, free.x)
+    else:
+        assert paced.status is Status.STALLED
+        assert paced.function_evaluations == missed[0] + 1
+        assert f"too little progress in {missed[0]} residual evaluation" in paced.message
+
+
 @pytest.mark.parametrize("solver", SOLVERS, ids=ids)
 def test_non_finite_residual_at_start_fails(solver):
     res = solver.solve(FunctionProblem(lambda x: np.full(2, np.nan)), np.zeros(2), TOL)

@@ -106,7 +106,8 @@ class Equilibrium:
 
     def solve(self, edges, control: Control, use_fallback: bool = True,
               budget: int | None = None, refine: bool = True, polish: bool = True,
-              fallback_budget: int | None = None, probation: int = 0) -> State:
+              fallback_budget: int | None = None, probation: int = 0,
+              pace: tuple[float, ...] = (), reduction: float = 0.0) -> State:
         """Equilibrium at ``control`` from ``edges`` (contact-set changes included).
 
         ``use_fallback = False`` skips the fallback march when the primary solver stops, and
@@ -115,7 +116,15 @@ class Equilibrium:
         while a halved step (and at the end the snap) finds the jump anyway. ``fallback_budget``
         caps the fallback's calls instead when given. ``probation`` sets
         :attr:`Tolerances.probation` for the primary solver's calls (not the fallback's): the
-        approach's trial steps stop a solve that makes no progress and halve the step instead.
+        approach's trial steps stop a solve that makes no progress and halve the step instead;
+        ``pace`` sets :attr:`Tolerances.pace` with it for the first solver call, from the
+        given edges (not for the calls after contacts are born or merge, whose starts are far
+        from their roots and gain slowly at first).
+
+        ``reduction``: each solver call converges once ``max|r|`` is below this fraction of its
+        value at the call's start, or below the tolerance, whichever is larger (0: the
+        tolerance; :meth:`reduced`). The approach's intermediate steps use it: their states are
+        starts for the next step, whose prediction is further off than that.
 
         ``refine = False`` reports a contact whose small tension and split alternate as a cycle
         instead of refining it (:data:`REFINED_TENSION`): the approach's intermediate steps,
@@ -148,6 +157,7 @@ class Equilibrium:
         rezoned = False         # zones remade to judge a cohesive contact's tension
         just_born = False       # contacts were just born and pulled open by adhesion
         splits: list[np.ndarray] = []
+        restarted = False       # a solver call was made (the pace is for the first one)
         for _ in range(self.max_restarts):
             if edges.size == 0:
                 born = self.checks.births_without_contact(control)
@@ -158,13 +168,16 @@ class Equilibrium:
             system = self.system(control, edges)
             try:
                 tolerances = self.noise_floor(system, edges, tolerances)
-                fallback_tolerances = attrs.evolve(fallback_tolerances,
-                                                   residual=tolerances.residual)
+                call = self.reduced(system, edges, tolerances, reduction)
+                if pace and not restarted:
+                    call = attrs.evolve(call, pace=pace)
+                restarted = True
+                fallback_tolerances = attrs.evolve(fallback_tolerances, residual=call.residual)
                 if fallback_first and self.fallback is not None:
                     fallback_first = False
                     res = self.fallback.solve(system, edges, fallback_tolerances)
                 else:
-                    res = self.solver.solve(system, edges, tolerances)
+                    res = self.solver.solve(system, edges, call)
                 if not res.converged and self.fallback is not None and (use_fallback or just_born):
                     log.iterations += res.iterations
                     log.event(f"{type(self.solver).__name__} stopped ({res.status.value}); "
@@ -382,6 +395,20 @@ class Equilibrium:
         if not any(e.startswith("residual tolerance raised") for e in self.log.events[-3:]):
             self.log.event(f"residual tolerance raised to the round-off floor {floor:.2g}")
         return attrs.evolve(tolerances, residual=floor)
+
+    @staticmethod
+    def reduced(system, x, tolerances, reduction: float):
+        """``tolerances`` with the residual tolerance raised to ``reduction`` times ``max|r|`` at
+        ``x`` (a solver call's start; the solver's first evaluation finds it cached) when that is
+        higher; ``tolerances`` when ``reduction`` is 0 or the residual there is not finite."""
+        if reduction <= 0.0:
+            return tolerances
+        r = system.residual(x)
+        if not np.all(np.isfinite(r)):
+            return tolerances
+        goal = reduction * float(np.max(np.abs(r)))
+        return tolerances if goal <= tolerances.residual else attrs.evolve(tolerances,
+                                                                           residual=goal)
 
     def closes(self, edges, control: Control) -> bool:
         """Whether the fallback march from ``edges`` closes the contact over the period."""

@@ -29,6 +29,20 @@ APPROACH_BUDGET_ANALYTIC = 15
 #: split) progresses steadily but slowly while its steps are bounded, and the rule cost the rough
 #: adhesionless solve at ζ = 1e-2 3.7 times the evaluations.
 APPROACH_PROBATION = 4
+#: Earlier checkpoints of that probation (:attr:`Tolerances.pace`): after one evaluation past
+#: the first the best ``max|r|`` must be below 0.9 of the first, after two below 0.6. On the
+#: crowded corners (seeds 0-2) and the rough point (seeds 11-13), 372 solves of adhesive
+#: approach steps: the 307 that converged had at most 0.81 and 0.50 there, the 65 that failed a
+#: median of 0.93 and 0.91; the checkpoints stop 57 of these one to three evaluations sooner
+#: (160 evaluations) and no converging one (``docs/performance.md`` §16).
+APPROACH_PACE = (0.9, 0.6)
+#: The corrector of an intermediate approach step (not the last, at the target) converges
+#: once ``max|r|`` is this fraction of its value at the predicted start, or at the tolerance
+#: (:meth:`Equilibrium.solve`'s ``reduction``): the state then lies within a ten-thousandth of
+#: the predictor's error from the branch, while the next step's prediction errs by about
+#: :data:`PREDICTOR_ERROR` of the half-widths. It saves the last one or two of the three to
+#: five evaluations of a converging step (``docs/performance.md`` §16).
+STEP_REDUCTION = 1e-4
 #: Growth per converged step of the largest step allowed after a failed one on an adhesive
 #: approach (:meth:`Path.approach`). Adhesionless approaches keep growing as before: with the
 #: ceiling, nonlinear CG on the thesis rough profile at ζ = 1e-2 reached its final load on
@@ -192,7 +206,8 @@ class Path:
             trial = eq.solve(start, Control.penetration_of(d_next), use_fallback=last,
                              budget=self.budget, fallback_budget=APPROACH_BUDGET,
                              refine=d_next == d_end, polish=d_next == d_end,
-                             probation=self.probation)
+                             probation=self.probation, pace=() if last else self.pace,
+                             reduction=0.0 if d_next == d_end else STEP_REDUCTION)
             if trial.outcome is Outcome.CONVERGED:
                 if eq.adhesive and self.jumped(start, state.edges, trial.edges):
                     # the fallback march crossed a fold: the failures before it say nothing
@@ -440,6 +455,11 @@ class Path:
         """:attr:`Tolerances.probation` of an approach step that can still be halved:
         :data:`APPROACH_PROBATION` for an adhesive scene solved :attr:`quick`, else 0."""
         return APPROACH_PROBATION if self.quick and self.eq.adhesive else 0
+
+    @property
+    def pace(self) -> tuple[float, ...]:
+        """:attr:`Tolerances.pace` of those steps: :data:`APPROACH_PACE` with the probation."""
+        return APPROACH_PACE if self.probation else ()
 
     @property
     def quick(self) -> bool:
