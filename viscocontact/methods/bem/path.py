@@ -33,8 +33,10 @@ APPROACH_PROBATION = 4
 #: the first the best ``max|r|`` must be below 0.9 of the first, after two below 0.6. On the
 #: crowded corners (seeds 0-2) and the rough point (seeds 11-13), 372 solves of adhesive
 #: approach steps: the 307 that converged had at most 0.81 and 0.50 there, the 65 that failed a
-#: median of 0.93 and 0.91; the checkpoints stop 57 of these one to three evaluations sooner
-#: (160 evaluations) and no converging one (``docs/performance.md`` §16).
+#: median of 0.93 and 0.91; the checkpoints would stop 57 of these one to three evaluations
+#: sooner (160 evaluations) and no converging one. They apply to a step's first solver call
+#: (:meth:`Equilibrium.solve`), which saves 15-47 evaluations a crowded corner
+#: (``docs/performance.md`` §16).
 APPROACH_PACE = (0.9, 0.6)
 #: The corrector of an intermediate approach step (not the last, at the target) converges
 #: once ``max|r|`` is this fraction of its value at the predicted start, or at the tolerance
