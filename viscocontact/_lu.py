@@ -12,9 +12,10 @@ second part at the same time. With one thread the same calls run one after the o
 factors are the same bit for bit on any thread count.
 
 On the installed OpenBLAS (scipy 1.17's) they are also the bits of one ``scipy.linalg.lu_factor``
-call: its ``getrf`` blocks by 256 columns above 512 unknowns and sums each update in the same
-order (``benchmarks/factorisation.py`` checks this on influence matrices). The pivots are those of
-partial pivoting over each full column, as in LAPACK.
+call, at every size measured from 700 unknowns up (``benchmarks/factorisation.py`` checks it on
+influence matrices): its ``getrf`` blocks by 256 columns there and sums each update in the same
+order. Another BLAS may sum in another order; the factors stay those of partial pivoting over
+each full column, as in LAPACK, and the same on any thread count.
 
 The factors are returned as :func:`scipy.linalg.lu_factor` returns them, for
 :func:`scipy.linalg.lu_solve`.

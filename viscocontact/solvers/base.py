@@ -11,9 +11,10 @@ Contract for implementers
    change the number of unknowns when contacts merge) and restarts the solver.
 4. Stop with ``converged=True`` only when ``max|r| <= tolerances.residual``; otherwise report the
    reason in ``status``/``message``. Count every call of ``residual`` in ``function_evaluations``.
-   ``tolerances.probation`` (stop early without progress) may be honoured or ignored: a solve
-   that ignores it costs its caller evaluations, not correctness; ``CountedResidual.of`` in
-   ``viscocontact.solvers._fd`` implements it with the budget.
+   ``tolerances.probation`` and ``tolerances.pace`` (stop early without progress) may be
+   honoured or ignored: a solve that ignores them costs its caller evaluations, not
+   correctness; ``CountedResidual.of`` in ``viscocontact.solvers._fd`` implements them with
+   the budget.
 """
 from __future__ import annotations
 

@@ -19,6 +19,11 @@ SLS = StandardLinearSolid(beta=10.0)
 WAVY = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=SLS, solver=Newton(),
                       adhesion=EnergyBalance(gamma=1e-4), mean_pressure=0.1, zeta=1e-3,
                       discretization=Discretization(elements=32))
+#: A 12-scale self-affine profile, adhesive, Broyden (p̃∞ = 0.2, ζ = 0.1): contacts are born and
+#: merge on the way into one.
+ROUGH12 = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
+                         rheology=SLS, solver=Broyden(), adhesion=EnergyBalance(gamma=2.387e-7),
+                         mean_pressure=0.2, zeta=0.1, discretization=Discretization(elements=32))
 
 
 def _both(problem):
@@ -52,10 +57,7 @@ def test_the_predicted_path_reaches_the_rough_equilibrium_of_the_plain_one():
     """A 12-scale self-affine profile, adhesive (γ̃ = 2.387e-7, Broyden, p̃∞ = 0.2, ζ = 0.1):
     contacts are born and merge on the way into one; the same contact and area to 1e-8 (the
     plain path: 726 evaluations, the predicted one: 246)."""
-    problem = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
-                             rheology=SLS, solver=Broyden(),
-                             adhesion=EnergyBalance(gamma=2.387e-7), mean_pressure=0.2, zeta=0.1,
-                             discretization=Discretization(elements=32))
+    problem = ROUGH12
     plain, predicted = _both(problem)
     _assert_same_equilibrium(plain, predicted, edges_to=1e-8)
 
@@ -68,10 +70,7 @@ def test_failed_approach_steps_are_cut_short_and_not_retried_at_once(monkeypatch
     measured 104 against 217 evaluations, Ã to 1.5e-11)."""
     from viscocontact.methods.bem import path
 
-    problem = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
-                             rheology=SLS, solver=Broyden(),
-                             adhesion=EnergyBalance(gamma=2.387e-7), mean_pressure=0.2, zeta=0.1,
-                             discretization=Discretization(elements=32))
+    problem = ROUGH12
     ruled = Solve(problem, problem.prepare()).run(None, False)
     monkeypatch.setattr(path, "APPROACH_PROBATION", 0)
     monkeypatch.setattr(path, "CEILING_GROWTH", np.inf)
@@ -87,10 +86,7 @@ def test_intermediate_steps_to_a_reduction_and_on_pace_reach_the_same_equilibriu
     the pace stops no step of this path, whose one failing solve comes after births)."""
     from viscocontact.methods.bem import path
 
-    problem = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
-                             rheology=SLS, solver=Broyden(),
-                             adhesion=EnergyBalance(gamma=2.387e-7), mean_pressure=0.2, zeta=0.1,
-                             discretization=Discretization(elements=32))
+    problem = ROUGH12
     ruled = Solve(problem, problem.prepare()).run(None, False)
     monkeypatch.setattr(path, "STEP_REDUCTION", 0.0)
     monkeypatch.setattr(path, "APPROACH_PACE", ())

@@ -157,7 +157,7 @@ class Equilibrium:
         rezoned = False         # zones remade to judge a cohesive contact's tension
         just_born = False       # contacts were just born and pulled open by adhesion
         splits: list[np.ndarray] = []
-        restarted = False       # a solver call was made (the pace is for the first one)
+        called = False          # a solver call was made (the pace is for the first one)
         for _ in range(self.max_restarts):
             if edges.size == 0:
                 born = self.checks.births_without_contact(control)
@@ -169,9 +169,9 @@ class Equilibrium:
             try:
                 tolerances = self.noise_floor(system, edges, tolerances)
                 call = self.reduced(system, edges, tolerances, reduction)
-                if pace and not restarted:
+                if pace and not called:
                     call = attrs.evolve(call, pace=pace)
-                restarted = True
+                called = True
                 fallback_tolerances = attrs.evolve(fallback_tolerances, residual=call.residual)
                 if fallback_first and self.fallback is not None:
                     fallback_first = False

@@ -35,7 +35,8 @@ APPROACH_PROBATION = 4
 #: approach steps: the 307 that converged had at most 0.81 and 0.50 there, the 65 that failed a
 #: median of 0.93 and 0.91; the checkpoints would stop 57 of these one to three evaluations
 #: sooner (160 evaluations) and no converging one. They apply to a step's first solver call
-#: (:meth:`Equilibrium.solve`), which saves 15-47 evaluations a crowded corner
+#: (:meth:`Equilibrium.solve`), and not on the smallest step, whose failure hands the point it
+#: reached on to the fallback march: 15-47 evaluations fewer a crowded corner
 #: (``docs/performance.md`` §16).
 APPROACH_PACE = (0.9, 0.6)
 #: The corrector of an intermediate approach step (not the last, at the target) converges
