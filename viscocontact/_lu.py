@@ -23,8 +23,6 @@ The factors are returned as :func:`scipy.linalg.lu_factor` returns them, for
 from __future__ import annotations
 
 import ctypes
-import os
-import threading
 import warnings
 from typing import Callable
 
@@ -43,7 +41,6 @@ LAG = 2
 UNIT = 16
 
 _routines: dict | None = None
-_busy = threading.Lock()        # held while a factorisation uses the pool's second thread
 
 
 def _routine(module, name: str, n_args: int):
@@ -140,7 +137,7 @@ def lu_factor(matrix: np.ndarray, task: Callable[[], object] | None = None):
     once the task is done. With one thread the task does not run (what it prepares is computed
     when it is needed), as with :func:`~viscocontact._threads.alongside`.
     """
-    from ._threads import alongside, executor, run_alone, threads
+    from ._threads import alongside, executor, run_alone, second_thread
 
     n = matrix.shape[0]
     if n < SMALLEST:
@@ -149,16 +146,12 @@ def lu_factor(matrix: np.ndarray, task: Callable[[], object] | None = None):
         factorise = lambda: scipy_lu_factor(matrix, check_finite=False)   # noqa: E731
         return factorise() if task is None else alongside(factorise, task)
     a = np.array(matrix, dtype=float, order="F")
-    two = threads() >= 2 and _busy.acquire(blocking=False)
-    try:
+    with second_thread() as two:
         pool = executor(1) if two else None
         beside = pool.submit(run_alone, task) if pool is not None and task is not None else None
         piv = _blocked(_Factors(a), pool, beside)
         if beside is not None:
             beside.result()
-    finally:
-        if two:
-            _busy.release()
     return a, piv
 
 
@@ -192,13 +185,3 @@ def _blocked(f: _Factors, pool, beside) -> np.ndarray:
         warnings.warn(f"Diagonal number {f.singular} is exactly zero. Singular matrix.",
                       LinAlgWarning, stacklevel=3)
     return piv
-
-
-def _forget() -> None:
-    """In a forked child: no thread of the parent's holds the lock there."""
-    global _busy
-    _busy = threading.Lock()
-
-
-if hasattr(os, "register_at_fork"):
-    os.register_at_fork(after_in_child=_forget)

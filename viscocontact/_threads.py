@@ -19,11 +19,12 @@ study's chains, one per core.
 """
 from __future__ import annotations
 
+import contextlib
 import numbers
 import os
 import threading
 from concurrent.futures import ThreadPoolExecutor
-from typing import Callable, TypeVar
+from typing import Callable, Iterator, TypeVar
 
 import numpy as np
 
@@ -50,7 +51,7 @@ _lock = threading.Lock()
 _count: int | None = None
 _pool: ThreadPoolExecutor | None = None
 _side: ThreadPoolExecutor | None = None     # the one thread of :func:`alongside`
-_side_free = threading.Lock()               # held while the side thread works
+_side_free = threading.Lock()               # held while a caller uses a second thread
 _alone = threading.local()                  # this thread runs beside another's work
 _pool_size = 0
 
@@ -171,9 +172,9 @@ def alongside(work: Callable[[], T], task: Callable[[], object]) -> T:
     here and the task not at all, rather than wait in a queue.
     """
     global _side
-    if threads() < 2 or not _side_free.acquire(blocking=False):
-        return work()
-    try:
+    with second_thread() as two:
+        if not two:
+            return work()
         with _lock:
             if _side is None:
                 _side = ThreadPoolExecutor(max_workers=1, thread_name_prefix="viscocontact-side")
@@ -185,9 +186,24 @@ def alongside(work: Callable[[], T], task: Callable[[], object]) -> T:
         finally:
             _alone.on = False
             result = future.result()
-    finally:
-        _side_free.release()
     return result
+
+
+@contextlib.contextmanager
+def second_thread() -> Iterator[bool]:
+    """Whether this caller may put work on a second thread beside its own, for the block: True
+    when :func:`threads` allows two and no other caller in this process holds the claim (solves
+    in several threads of one process), else False, and the caller works alone rather than wait
+    in a queue. One claim serves :func:`alongside` and the threaded factorisation
+    (:mod:`._lu`)."""
+    lock = _side_free
+    if threads() < 2 or not lock.acquire(blocking=False):
+        yield False
+        return
+    try:
+        yield True
+    finally:
+        lock.release()
 
 
 def run_alone(task: Callable[[], T]) -> T:

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.linalg import LinAlgWarning, lu_factor, lu_solve
 
-from viscocontact import _lu
+from viscocontact import _lu, _threads
 from viscocontact._threads import set_threads, threads
 
 
@@ -117,7 +117,7 @@ def test_an_error_of_the_task_is_raised_once_the_factors_are_done():
 
     with pytest.raises(RuntimeError, match="task failed"):
         _lu.lu_factor(influence_like(_lu.SMALLEST, 8), task)
-    assert not _lu._busy.locked()
+    assert not _threads._side_free.locked()
 
 
 def test_factorisations_in_two_threads_at_once_give_the_same_bits():
