@@ -295,6 +295,7 @@ def _closes(lam, p, zeta):
     return r
 
 
+@pytest.mark.slow     # a 30-equilibrium approach with cohesive zones: 22-31 s
 def test_contact_closes_where_the_approach_branch_peaks_below_the_load():
     """λ = 5, β = 10, ζ = 1, p̃∞ = 0.1: from first touch the trailing edge runs back towards the
     trough while the load falls (it peaks at p̃∞ = -0.191, Δ̃ = 0.50; -0.86 where the branch ends

@@ -16,6 +16,7 @@ from viscocontact.problem import ContactProblem, mesh_spec
 from viscocontact.profiles import Sinusoid
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Bisection, Broyden, Newton, NonlinearCG
+from viscocontact.testing.fourier import step_coefficients
 
 LAM = 0.1
 SLS = StandardLinearSolid(beta=10.0)
@@ -106,11 +107,7 @@ def _dissipation_friction(prob, prep, result):
     mesh = build_mesh(e, mesh_spec(prob.discretization, prep.kernel, prob.adhesion))
     f = solve_fields(mesh, prep.kernel, prep.shape, mean_pressure=prob.mean_pressure)
     m = np.arange(1, 200_001, dtype=float)
-    sig_hat = np.zeros(m.shape, complex)
-    for q in range(len(f.sigma)):
-        sig_hat += f.sigma[q] * (np.exp(-1j * m * mesh.left[q])
-                                 - np.exp(-1j * m * mesh.right[q])) / (1j * m)
-    sig_hat /= 2 * np.pi
+    sig_hat = step_coefficients(mesh.left, mesh.right, f.sigma, m.size)
     power = 4 * np.pi * np.sum(np.abs(sig_hat) ** 2 * prep.kernel.multiplier(m).imag)
     return LAM * power / (2 * np.pi * prob.mean_pressure)
 
@@ -158,6 +155,7 @@ def test_stored_elastic_energy_is_never_negative(log_zeta, p):
     assert ctx.stored_energy() >= 0
 
 
+@pytest.mark.slow     # two rough adhesive solves through the fallback march: 17-19 s
 def test_the_default_fallback_finishes_with_newton_on_the_march_s_equilibrium():
     # a small rough adhesive scene whose nonlinear CG hands over to the fallback march: the
     # default march finishes with Newton steps (Bisection.newton_below) and must land on the

@@ -261,7 +261,7 @@ def rough_dry_area():
     return r.area
 
 
-@pytest.mark.parametrize("gamma", [1e-7, 1e-6, 1e-5,
+@pytest.mark.parametrize("gamma", [1e-7, 1e-6, pytest.param(1e-5, marks=pytest.mark.slow),
                                    pytest.param(1e-4, marks=pytest.mark.slow)])
 def test_adhesive_rough_up_to_full_contact(gamma, rough_dry_area):
     """Rough profile (thesis family, seed 0), p̃∞ = 0.05: adhesion only adds area, and a large
@@ -388,7 +388,8 @@ def _twin_peaks() -> MeasuredProfile:
 @pytest.mark.parametrize("rheology,zeta,adhesion", [
     (Elastic(), 0.0, NoAdhesion()),
     (StandardLinearSolid(beta=10.0), 1.0, NoAdhesion()),
-    (Elastic(), 0.0, EnergyBalance(gamma=1e-8)),
+    # 23 s on a slow two-core machine: in the slow suite (the merge itself is in the first two)
+    pytest.param(Elastic(), 0.0, EnergyBalance(gamma=1e-8), marks=pytest.mark.slow),
 ], ids=["elastic", "sls-zeta1", "elastic-adhesive"])
 def test_close_contacts_merge_along_a_load_path(rheology, zeta, adhesion):
     """Penetration stepped up, each step continued from the previous result: two contacts form

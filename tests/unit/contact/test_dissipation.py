@@ -8,6 +8,7 @@ from viscocontact.contact.fields import KnownLoads, dissipated_friction
 from viscocontact.contact.mesh import Mesh
 from viscocontact.kernels import HalfPlane
 from viscocontact.rheology import Elastic, StandardLinearSolid
+from viscocontact.testing.fourier import step_coefficients
 
 AMP = 0.1
 
@@ -29,10 +30,7 @@ def _fourier(kernel, mesh, sigma, loads, p, modes=200_000):
     right = np.concatenate([mesh.right, loads.right])
     sig = np.concatenate([sigma, loads.stress])
     m = np.arange(1, modes + 1, dtype=float)
-    sig_hat = np.zeros(m.shape, complex)
-    for a, b, s in zip(left, right, sig):
-        sig_hat += s * (np.exp(-1j * m * a) - np.exp(-1j * m * b))
-    sig_hat /= 2j * np.pi * m
+    sig_hat = step_coefficients(left, right, sig, modes)
     power = 4 * np.pi * np.sum(np.abs(sig_hat) ** 2 * kernel.multiplier(m).imag)
     return AMP * power / (2 * np.pi * p)
 
