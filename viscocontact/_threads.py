@@ -31,6 +31,7 @@ import numpy as np
 from .errors import ValidationError
 
 T = TypeVar("T")
+U = TypeVar("U")
 
 #: The environment variable that sets the thread count.
 ENV = "VISCOCONTACT_THREADS"
@@ -187,6 +188,17 @@ def alongside(work: Callable[[], T], task: Callable[[], object]) -> T:
             _alone.on = False
             result = future.result()
     return result
+
+
+def pair(first: Callable[[], T], second: Callable[[], U]) -> tuple[T, U]:
+    """``(first(), second())``, the two computed at once on two threads when a second one is
+    free (:func:`alongside`; ``second`` in this thread, alone), else one after the other. For
+    independent pieces of work that release the GIL (products of dense matrices on one BLAS
+    thread each): every call is the one made without threads, so the results are the same
+    bits."""
+    done: list = []
+    out = alongside(first, lambda: done.append(second()))
+    return out, (done[0] if done else second())
 
 
 @contextlib.contextmanager

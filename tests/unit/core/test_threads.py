@@ -213,3 +213,23 @@ def test_a_busy_side_thread_makes_the_work_run_here_without_the_task():
     first.join(10)
     assert got == (here, "second") and "task" not in seen
     assert seen["first"] == "first"
+
+
+@pytest.mark.parametrize("count", [1, 2])
+def test_pair_gives_both_results_on_any_thread_count_and_with_a_busy_side_thread(count):
+    """Both halves are computed whatever the threads: on two, the first elsewhere and the
+    second here alone; on one, or with the side thread claimed, one after the other here."""
+    import threading
+
+    set_threads(count)
+    here = threading.current_thread().name
+    first, second = _threads.pair(lambda: threading.current_thread().name,
+                                  lambda: (threading.current_thread().name, threads()))
+    assert second == (here, 1)
+    assert (first != here) == (count == 2)
+    set_threads(2)
+    with _threads.second_thread() as claimed:         # another caller holds the second thread
+        assert claimed
+        first, second = _threads.pair(lambda: threading.current_thread().name,
+                                      lambda: threading.current_thread().name)
+    assert first == second == here
