@@ -323,13 +323,11 @@ class FieldSensitivity:
             return out
 
         def right():
-            if not dissipative:
-                return {}
             return {"At_old": A0.T @ hS_old,                                # (N, M)
                     "hsE_old": E_bb.T @ hS_old,                             # (K, M)
                     "hsig_E_bb": hsig @ E_bb,                               # (K,)
                     "E_nb_sig": E_nb @ s_sig}                               # (Σn,)
-        products, transposed = pair(left, right)
+        products, transposed = pair(left, right) if dissipative else (left(), {})
         GS_b = products["GS_b"]
         if dissipative:
             A_old, ES_b, E_bb_sig = products["A_old"], products["ES_b"], products["E_bb_sig"]

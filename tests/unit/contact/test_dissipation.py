@@ -55,3 +55,23 @@ def test_elastic_kernel_dissipates_nothing_and_limits():
         assert np.isnan(dissipated_friction(kernel, mesh, sigma, AMP, p, loads))
     finally:
         fields.DISSIPATION_MAX_NODES = limit
+
+
+def test_step_coefficients_are_the_element_by_element_sum():
+    """The blocked Fourier reference against the plain sum of its formula, for elements of very
+    different widths and a mode count that is not a multiple of the block."""
+    rng = np.random.default_rng(3)
+    nodes = np.sort(rng.uniform(-np.pi, np.pi, 41))
+    left, right, stress = nodes[:-1], nodes[1:], rng.normal(size=40)
+    m = np.arange(1, 3001, dtype=float)
+    plain = sum(s * (np.exp(-1j * m * a) - np.exp(-1j * m * b))
+                for a, b, s in zip(left, right, stress)) / (2j * np.pi * m)
+    blocked = step_coefficients(left, right, stress, m.size)
+    assert np.max(np.abs(blocked - plain)) <= 1e-13 * np.max(np.abs(plain))
+
+
+def test_step_coefficients_name_a_bad_input():
+    with pytest.raises(ValueError, match="one entry per element"):
+        step_coefficients([0.0, 1.0], [1.0], [1.0], 10)
+    with pytest.raises(ValueError, match="modes must be at least 1"):
+        step_coefficients([0.0], [1.0], [1.0], 0)
