@@ -8,9 +8,12 @@ The point (thesis §4.6 scene): ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.
 default mesh and the default solver of an adhesive scene (Broyden), from first touch.
 ``--crowded``: the crowded corner instead, ζ = 1e-6, p̃∞ = 0.6, seeds 0-2 by default.
 
-The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one BLAS thread
-(median of five), measured in the same run so that the ratio does not depend on the machine's
-load. The solves run BLAS on one thread too; with the threads of ``--threads`` (default
+The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one BLAS thread,
+measured in the same run so that the ratio does not depend on the machine's load: the median
+of five at the start, and of three right before and right after each seed, whose mean is that
+seed's unit (a shared machine's speed drifts by a third within minutes, which a single
+yardstick for a four-minute run of the crowded corners would put into the ratios). The median
+line gives the median of the seeds' ratios. The solves run BLAS on one thread too; with the threads of ``--threads`` (default
 ``VISCOCONTACT_THREADS`` or the cores) their influence loop splits its rows, the finite-δX
 borders' solves split their columns, and the borders' rows and columns are computed while the
 matrix is factorised (``docs/performance.md`` §13-14; the same bits on any count). Prints one
@@ -105,7 +108,8 @@ def main(argv=None) -> None:
               f"{warm_up():.2f} s", flush=True)
     print(f"{'seed':>4s} {'s':>8s} {'x solve':>8s} {'ev':>6s} {'it':>6s} {'area':>10s} {'n':>3s} "
           "converged")
-    times = []
+    times: list[float] = []
+    ratios: list[float] = []
     for seed in seeds:
         prob = problem(seed, args.crowded, solver)
         if args.profile:
@@ -117,15 +121,19 @@ def main(argv=None) -> None:
             print(f"profile of seed {seed} written to {args.profile}: Ã = {r.area:.7f}, "
                   f"{r.function_evaluations} evaluations, converged {r.converged}")
             return
+        before = dense_solve_seconds(repeats=3)
         t = time.perf_counter()
         r = prob.solve()
         s = time.perf_counter() - t
+        unit = 0.5 * (before + dense_solve_seconds(repeats=3))
         times.append(s)
-        print(f"{seed:4d} {s:8.2f} {s / ref:8.1f} {r.function_evaluations:6d} {r.iterations:6d} "
-              f"{r.area:10.7f} {r.n_contacts:3d} {r.converged}", flush=True)
+        ratios.append(s / unit)
+        print(f"{seed:4d} {s:8.2f} {s / unit:8.1f} {r.function_evaluations:6d} "
+              f"{r.iterations:6d} {r.area:10.7f} {r.n_contacts:3d} {r.converged} "
+              f"(dense solve {unit:.3f} s)", flush=True)
     med = float(np.median(times))
     target = "60 s" if args.crowded else "2 s, about 16 dense solves"
-    print(f"median {med:.2f} s = {med / ref:.1f} dense solves (target: {target})")
+    print(f"median {med:.2f} s, {float(np.median(ratios)):.1f} dense solves (target: {target})")
 
 
 if __name__ == "__main__":
