@@ -9,16 +9,16 @@ default mesh and the default solver of an adhesive scene (Broyden), from first t
 ``--crowded``: the crowded corner instead, ζ = 1e-6, p̃∞ = 0.6, seeds 0-2 by default.
 
 The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one BLAS thread,
-measured in the same run so that the ratio does not depend on the machine's load: the median
-of five at the start, and of three right before and right after each seed, whose mean is that
-seed's unit (a shared machine's speed drifts by a third within minutes, which a single
-yardstick for a four-minute run of the crowded corners would put into the ratios). The median
-line gives the median of the seeds' ratios. The solves run BLAS on one thread too; with the threads of ``--threads`` (default
-``VISCOCONTACT_THREADS`` or the cores) their influence loop splits its rows, the finite-δX
-borders' solves split their columns, and the borders' rows and columns are computed while the
-matrix is factorised (``docs/performance.md`` §13-14; the same bits on any count). Prints one
-line per seed and the median; ``--profile FILE`` writes the cProfile statistics of the first
-seed to FILE instead of timing the rest.
+measured in the same run so that the ratio does not depend on the machine's load: the median of
+five at the start, and of three right before and right after each seed, whose mean is that
+seed's unit (a shared machine's speed drifts by a third within minutes, which a single yardstick
+for a four-minute run of the crowded corners would put into the ratios). The median line gives
+the median of the seeds' ratios. The solves run BLAS on one thread too; with the threads of
+``--threads`` (default ``VISCOCONTACT_THREADS`` or the cores) their influence loop splits its
+rows, the finite-δX borders' solves split their columns, and the borders' rows and columns are
+computed while the matrix is factorised (``docs/performance.md`` §13-14; the same bits on any
+count). Prints one line per seed and the median; ``--profile FILE`` writes the cProfile
+statistics of the first seed to FILE instead of timing the rest.
 
 Before the timed solves a small adhesive sinusoid is solved once and its time printed as the
 process's start: the package's imports, numba and its cached machine code (0.6-1 s), which a
