@@ -16,7 +16,7 @@ from viscocontact.problem import ContactProblem, mesh_spec
 from viscocontact.profiles import Sinusoid
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Bisection, Broyden, Newton, NonlinearCG
-from viscocontact.testing.fourier import step_coefficients
+from viscocontact.testing.fourier import dissipated_power
 
 LAM = 0.1
 SLS = StandardLinearSolid(beta=10.0)
@@ -106,9 +106,7 @@ def _dissipation_friction(prob, prep, result):
     e = result.edges.ravel()
     mesh = build_mesh(e, mesh_spec(prob.discretization, prep.kernel, prob.adhesion))
     f = solve_fields(mesh, prep.kernel, prep.shape, mean_pressure=prob.mean_pressure)
-    m = np.arange(1, 200_001, dtype=float)
-    sig_hat = step_coefficients(mesh.left, mesh.right, f.sigma, m.size)
-    power = 4 * np.pi * np.sum(np.abs(sig_hat) ** 2 * prep.kernel.multiplier(m).imag)
+    power = dissipated_power(prep.kernel, mesh.left, mesh.right, f.sigma, modes=200_000)
     return LAM * power / (2 * np.pi * prob.mean_pressure)
 
 

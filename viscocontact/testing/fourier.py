@@ -1,6 +1,7 @@
 """The Fourier series of a piecewise-constant stress on the period, as an independent reference
-for tests (the dissipated power ``4π Σ_m |σ̂_m|² Im[m-th kernel multiplier]`` against the BEM's
-real-space forms).
+for tests: :func:`step_coefficients`, and :func:`dissipated_power`, the power
+``4π Σ_m |σ̂_m|² Im[m-th kernel multiplier]`` fed into the bulk, against the BEM's real-space
+forms.
 
 For a stress ``s_q`` on ``[a_q, b_q]`` the coefficient of ``exp(i m x)`` is
 ``σ̂_m = Σ_q s_q (exp(-i m a_q) - exp(-i m b_q)) / (2π i m)``. Summed element by element this
@@ -43,3 +44,16 @@ def step_coefficients(left, right, stress, modes: int) -> np.ndarray:
     summed = (outer @ inner.T).ravel()[:modes]                         # Σ_k w_k e^{-i m x_k}
     m = np.arange(1, modes + 1, dtype=float)
     return summed / (2j * np.pi * m)
+
+
+def dissipated_power(kernel, left, right, stress, modes: int = 200_000) -> float:
+    """``4π Σ_{m=1}^{modes} |σ̂_m|² Im[kernel.multiplier(m)]``: the power the stress ``stress[q]``
+    on ``[left[q], right[q]]`` feeds into the bulk per unit speed (friction times ``2π p̃∞/Λ̃``).
+
+    ``kernel`` is a prepared kernel (anything with ``multiplier(m)``, the Fourier multiplier
+    ``S_m K(m)``). Stress jumps make ``|σ̂_m|²`` fall like ``1/m²``, so the tail after ``modes``
+    is of relative order ``1/modes``.
+    """
+    m = np.arange(1, modes + 1, dtype=float)
+    sig_hat = step_coefficients(left, right, stress, modes)
+    return float(4 * np.pi * np.sum(np.abs(sig_hat) ** 2 * np.imag(kernel.multiplier(m))))

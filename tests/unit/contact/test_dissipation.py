@@ -8,7 +8,7 @@ from viscocontact.contact.fields import KnownLoads, dissipated_friction
 from viscocontact.contact.mesh import Mesh
 from viscocontact.kernels import HalfPlane
 from viscocontact.rheology import Elastic, StandardLinearSolid
-from viscocontact.testing.fourier import step_coefficients
+from viscocontact.testing.fourier import dissipated_power, step_coefficients
 
 AMP = 0.1
 
@@ -29,10 +29,7 @@ def _fourier(kernel, mesh, sigma, loads, p, modes=200_000):
     left = np.concatenate([mesh.left, loads.left])
     right = np.concatenate([mesh.right, loads.right])
     sig = np.concatenate([sigma, loads.stress])
-    m = np.arange(1, modes + 1, dtype=float)
-    sig_hat = step_coefficients(left, right, sig, modes)
-    power = 4 * np.pi * np.sum(np.abs(sig_hat) ** 2 * kernel.multiplier(m).imag)
-    return AMP * power / (2 * np.pi * p)
+    return AMP * dissipated_power(kernel, left, right, sig, modes) / (2 * np.pi * p)
 
 
 @pytest.mark.parametrize("zeta", [0.1, 1.0, 10.0])
@@ -75,3 +72,13 @@ def test_step_coefficients_name_a_bad_input():
         step_coefficients([0.0, 1.0], [1.0], [1.0], 10)
     with pytest.raises(ValueError, match="modes must be at least 1"):
         step_coefficients([0.0], [1.0], [1.0], 0)
+
+
+def test_fourier_power_vanishes_without_loss_and_is_positive_with_it():
+    """An elastic solid stores the work of a sliding stress (no loss modulus: zero power); a
+    standard linear solid dissipates it (every ``Im`` of its multiplier is positive)."""
+    mesh, sigma, _, _ = _field()
+    lossless = HalfPlane().prepare(Elastic(), 1.0)
+    lossy = HalfPlane().prepare(StandardLinearSolid(beta=10.0), 1.0)
+    assert dissipated_power(lossless, mesh.left, mesh.right, sigma, 5000) == 0.0
+    assert dissipated_power(lossy, mesh.left, mesh.right, sigma, 5000) > 0.0
