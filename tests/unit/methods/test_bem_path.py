@@ -113,12 +113,15 @@ class _Edges:
     others none; ``solve`` returns the state it is started from."""
 
     adhesive = True
+    analytic = True
+    jacobian_solver = True
     log = None
 
     def __init__(self, lead: int, root: float):
         self.lead, self.root = lead, root
         self.evaluations = 0
         self.starts: list[np.ndarray] = []
+        self.options: list[dict] = []
 
     def residual_at(self, edges, control):
         self.evaluations += 1
@@ -129,6 +132,7 @@ class _Edges:
 
     def solve(self, start, control, **kwargs):
         self.starts.append(np.asarray(start, dtype=float))
+        self.options.append(kwargs)
         return attrs.evolve(_CONVERGED, edges=np.asarray(start, dtype=float))
 
 
@@ -152,6 +156,20 @@ def test_a_crossing_moves_the_fastest_edge_alone_until_it_lands():
     assert out.outcome is Outcome.CONVERGED
     assert eq.evaluations == 5
     np.testing.assert_allclose(eq.starts[0], [1.0 - 0.75 * 0.5, 2.0, 3.0, 3.5])
+
+
+def test_a_crossing_lands_on_the_approach_steps_probation():
+    """The landing's solve stops where it gains no two digits in four evaluations and hands
+    over to the fallback march (where the contact set has no equilibrium near the landing,
+    Broyden wandered 35-47 evaluations before its stall rule; ``docs/performance.md`` §18)."""
+    from viscocontact.methods.bem.path import APPROACH_BUDGET, APPROACH_PROBATION
+
+    eq = _Edges(lead=0, root=0.6)
+    _crossing(eq, [1.0, 2.0, 3.0, 3.5], [-10.0, 0.1, 0.2, -0.1])
+    (options,) = eq.options
+    assert options["probation"] == APPROACH_PROBATION > 0
+    assert options["budget"] == APPROACH_BUDGET
+    assert options.get("use_fallback", True)
 
 
 def test_a_crossing_that_meets_the_neighbour_solves_the_merged_contact():

@@ -27,7 +27,8 @@ APPROACH_BUDGET_ANALYTIC = 15
 #: the budget of 15 at residuals of 1e-3-1e-1, oscillating near a fold (a neck about to close).
 #: Adhesionless steps do not get it: one that starts far from its root (after a birth or a
 #: split) progresses steadily but slowly while its steps are bounded, and the rule cost the rough
-#: adhesionless solve at ζ = 1e-2 3.7 times the evaluations.
+#: adhesionless solve at ζ = 1e-2 3.7 times the evaluations. The solve that lands a fold's
+#: crossing (:meth:`Path.cross`) gets it too, and hands over to the fallback march instead.
 APPROACH_PROBATION = 4
 #: Earlier checkpoints of that probation (:attr:`Tolerances.pace`): after one evaluation past
 #: the first the best ``max|r|`` must be below 0.9 of the first, after two below 0.6. On the
@@ -408,6 +409,12 @@ class Path:
         Moving the other edges along the tangent too, by as much, took other branches on 4 of 15
         points of the thesis rough profile (against 2 of the path without crossings): their
         linear moves, many half-widths long, closed gaps the fastest edge's jump does not close.
+
+        The landing's solve is on the approach steps' :attr:`probation`. Where the contact set
+        has no equilibrium near the landing (a neck about to close), Broyden found none in 30
+        iterations (35-47 evaluations, 14 s on a crowded corner's ten contacts) before the
+        fallback march merged the contacts in a few evaluations; on probation it hands over
+        after five (``docs/performance.md`` §18).
         """
         x0 = np.asarray(state.edges, dtype=float)
         if tangent is None or x0.size == 0:
@@ -441,7 +448,8 @@ class Path:
             previous, s = s, 2.0 * s
         if start is None:
             return None
-        out = self.eq.solve(start, control, polish=polish, budget=APPROACH_BUDGET)
+        out = self.eq.solve(start, control, polish=polish, budget=APPROACH_BUDGET,
+                            probation=self.probation)
         return out if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT) else None
 
     @property
