@@ -313,7 +313,8 @@ class FieldSensitivity:
             hS_old = h[:, None] * S_old
 
         # the products with the base mesh's (N, N) matrices, in two halves of about equal
-        # cost, on two threads at once (the same calls, so the same bits)
+        # cost, on two threads at once (the same calls, so the same bits); the first half also
+        # computes ``f = ẇ - Ḃσ`` (:attr:`rhs`, two more such products)
         def left():
             out = {"GS_b": G_bb @ S_b, "rhs": self.rhs}                     # (N, M), (N, D)
             if dissipative:
@@ -328,7 +329,7 @@ class FieldSensitivity:
                     "hsig_E_bb": hsig @ E_bb,                               # (K,)
                     "E_nb_sig": E_nb @ s_sig}                               # (Σn,)
         products, transposed = pair(left, right) if dissipative else (left(), {})
-        GS_b = products["GS_b"]
+        GS_b, rhs = products["GS_b"], products["rhs"]
         if dissipative:
             A_old, ES_b, E_bb_sig = products["A_old"], products["ES_b"], products["E_bb_sig"]
             At_old, hsE_old = transposed["At_old"], transposed["hsE_old"]
@@ -351,7 +352,7 @@ class FieldSensitivity:
             rhs_b[:, k] = psi_b - b.r.T @ ln
         lam = self.adjoint(np.column_stack([rhs_b, Psi]))                  # (N, 2M)
         lam_b, mu = lam[:, :m], lam[:, m:]
-        base, LG_b = pair(lambda: mu.T @ self.rhs,                         # (M, D)
+        base, LG_b = pair(lambda: mu.T @ rhs,                              # (M, D)
                           lambda: G_bb.T @ lam_b)                           # (K, M)
         # the part of the explicit term that does not depend on the advance
         explicit_base = 0.5 * (self.width_vel.T @ (sig * w) + self.w_vel.T @ (h * sig))
