@@ -345,3 +345,119 @@ def test_a_reduced_solve_converges_at_a_fraction_of_its_start(r, reduction, expe
     out = Equilibrium.reduced(Start(), np.zeros(2), tol, reduction)
     assert out.residual == pytest.approx(expected, rel=1e-12)
     assert attrs.evolve(out, residual=tol.residual) == tol       # nothing else changed
+
+
+
+def _load_controlled_root(problem):
+    """``(path, state)``: the converged load-controlled state that a solve from first touch
+    reaches (before its stability check)."""
+    solve = Solve(problem, problem.prepare())
+    state = solve.path.approach(Control.load_of(problem.mean_pressure))
+    assert state.outcome is Outcome.CONVERGED, state.message
+    return solve.path, state
+
+
+def _central_stiffness(path, state, eps=5e-5):
+    """``dp̃∞/dΔ̃`` by central differences: two penetration-controlled solves at ``Δ̃ ± eps``
+    from the state's edges."""
+    fields, loads = state.fields, []
+    for change in (-eps, eps):
+        trial = path.eq.solve(state.edges, Control.penetration_of(fields.penetration + change),
+                              use_fallback=False, polish=False)
+        assert trial.outcome is Outcome.CONVERGED, trial.message
+        loads.append(trial.fields.mean_pressure)
+    return (loads[1] - loads[0]) / (2 * eps)
+
+
+def _wavy_at_zero_load(fraction):
+    """Elastic wavy contact (Λ̃ = 0.1) at p̃∞ = 0 with Γ̃ a fraction of the closing one, and
+    Johnson's solution for it."""
+    from scipy.optimize import brentq
+
+    from viscocontact.reference.johnson import JohnsonWavy
+    from viscocontact.rheology import Elastic
+
+    closing = brentq(lambda G: JohnsonWavy(Gamma=G).closure()[1], 1e-4, 1.0, xtol=1e-14)
+    gamma = fraction * closing
+    problem = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(),
+                             adhesion=EnergyBalance(gamma=gamma * 0.01), solver=Newton(),
+                             mean_pressure=0.0)
+    return problem, JohnsonWavy(Gamma=gamma)
+
+
+def test_the_branch_stiffness_of_a_stable_wavy_root_is_johnsons():
+    """Γ̃ half the closing one: the analytic ``dp̃∞/dΔ̃`` along the branch is Johnson's
+    ``(dp̃∞/dÃ)/(dΔ̃/dÃ)`` at his root to 5e-4 (measured 1.3e-4 on the default mesh, 3.5e-5
+    with 256 elements: the mesh) and the central difference of two perturbed solves to 1e-6
+    (measured 1e-7). The penetration-controlled state at the same root gives it through
+    the other formula, and ``load_stiffness`` takes it without a solve."""
+    problem, johnson = _wavy_at_zero_load(0.5)
+    path, state = _load_controlled_root(problem)
+    root = johnson.area_at_pressure(0.0)
+    h = 1e-6
+    expected = ((johnson.mean_pressure(root + h) - johnson.mean_pressure(root - h))
+                / (johnson.penetration(root + h) - johnson.penetration(root - h)))
+    k = path.branch_stiffness(state)
+    assert k == pytest.approx(expected, rel=5e-4)
+    assert k == pytest.approx(_central_stiffness(path, state), rel=1e-6)
+    pinned = path.eq.solve(state.edges, Control.penetration_of(state.fields.penetration))
+    assert pinned.outcome is Outcome.CONVERGED
+    assert path.branch_stiffness(pinned) == pytest.approx(k, rel=1e-5)
+    evaluations = path.log.evaluations
+    assert path.load_stiffness(state, 5e-5) == k
+    assert path.log.evaluations == evaluations
+
+
+def test_the_branch_stiffness_is_negative_on_johnsons_unstable_branch():
+    """Γ̃ 0.99 of the closing one: the first contact jumps past the load maximum onto the
+    branch where the load falls as the contact grows (Ã = 4.3817; Johnson's root there 4.3872).
+    The analytic stiffness is negative, as Johnson's is there, and equals the central
+    difference of two perturbed solves to 1e-6 (measured 2.3e-7)."""
+    problem, johnson = _wavy_at_zero_load(0.99)
+    path, state = _load_controlled_root(problem)
+    area = float(np.sum(state.fields.mesh.width))
+    assert area > johnson.closure()[0]
+    k = path.branch_stiffness(state)
+    assert k < 0
+    assert k == pytest.approx(_central_stiffness(path, state), rel=1e-6)
+
+
+def test_the_branch_stiffness_of_rough_and_cohesive_roots_is_the_perturbed_solves():
+    """ROUGH12's profile at p̃∞ = 0.4 (two contacts at the root, SLS at ζ = 0.1, Broyden) and
+    a Maugis-Dugdale sinusoid (SLS, ζ = 1): the analytic stiffness is the central difference of
+    two perturbed penetration-controlled solves to 1e-6 (measured 5e-8 and 2e-9)."""
+    from viscocontact.adhesion import MaugisDugdale
+
+    cohesive = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=SLS, solver=Broyden(),
+                              adhesion=MaugisDugdale(gamma=5e-4, range=1.0), mean_pressure=0.1,
+                              zeta=1.0)
+    two = attrs.evolve(ROUGH12, mean_pressure=0.4)
+    for problem, contacts in ((two, 2), (cohesive, 1)):
+        path, state = _load_controlled_root(problem)
+        assert state.fields.mesh.n_contacts == contacts
+        k = path.branch_stiffness(state)
+        assert k > 0
+        assert k == pytest.approx(_central_stiffness(path, state), rel=1e-6)
+
+
+def test_without_analytic_derivatives_the_stiffness_is_a_perturbed_solve():
+    """A system that gives no derivatives: ``branch_stiffness`` is None and ``load_stiffness``
+    is the secant of one perturbed penetration-controlled solve, as before."""
+    path, state = _load_controlled_root(WAVY)
+
+    class NoDerivatives:
+        control = state.system.control
+
+        @staticmethod
+        def derivatives(x):
+            return None
+
+    blind = attrs.evolve(state, system=NoDerivatives())
+    assert path.branch_stiffness(blind) is None
+    eps = 5e-5
+    trial = path.eq.solve(state.edges,
+                          Control.penetration_of(state.fields.penetration - eps),
+                          use_fallback=False, polish=False)
+    secant = (state.fields.mean_pressure - trial.fields.mean_pressure) / eps
+    assert path.load_stiffness(blind, eps) == secant
+    assert secant == pytest.approx(path.branch_stiffness(state), rel=1e-3)
