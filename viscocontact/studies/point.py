@@ -202,7 +202,10 @@ def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
     result = refined(scene, options, origin, origin_start, result, fields=spec.fields)
     if result.converged:
         return result, spec.started_from
-    return branch_ended(scene, options, result, fields=spec.fields)
+    ended = branch_ended(scene, options, result, fields=spec.fields)
+    # a point that converged from first touch starts its chain afresh; one that failed keeps
+    # the spec's own start
+    return ended, FIRST_TOUCH if ended.converged else spec.started_from
 
 
 def _solve_at(scene: Mapping[str, Any], zeta: float | None, start, options: dict, *,
@@ -270,14 +273,13 @@ def refined(scene: Mapping[str, Any], options: dict, origin: float, start: np.nd
 
 
 def branch_ended(scene: Mapping[str, Any], options: dict, failed, *, fields: bool = False):
-    """``(result, started_from)`` for a continued point that :func:`refined` did not reach
-    either: the branch of equilibria it was continued along ends before its ζ (a fold in ζ,
-    where the contact set has to jump and no continuation leads), so the point is solved from
-    first touch at its own ζ, as the first point of a chain is, and the chain goes on from there.
-    The message says so and keeps why the continuation failed; ``function_evaluations`` and
-    ``iterations`` count every solve. ``started_from`` is then :data:`FIRST_TOUCH`. A point
-    that does not converge from first touch either stays failed (``failed``, with both reasons,
-    and the spec's own start)."""
+    """The result of a continued point that :func:`refined` did not reach either: the branch
+    of equilibria it was continued along ends before its ζ (a fold in ζ, where the contact set
+    has to jump and no continuation leads), so the point is solved from first touch at its own
+    ζ, as the first point of a chain is, and the chain goes on from there. The message says so
+    and keeps why the continuation failed; ``function_evaluations`` and ``iterations`` count
+    every solve. A point that does not converge from first touch either stays failed
+    (``failed``, with both reasons)."""
     fresh = _solve_at(scene, None, None, options, fields=fields)
     counts = dict(function_evaluations=failed.function_evaluations
                   + fresh.function_evaluations,
@@ -285,9 +287,9 @@ def branch_ended(scene: Mapping[str, Any], options: dict, failed, *, fields: boo
     if fresh.converged:
         why = (f"{fresh.message}: from first touch at this ζ, the branch continued from the "
                f"neighbour having ended before it ({failed.message})")
-        return attrs.evolve(fresh, message=why, **counts), FIRST_TOUCH
+        return attrs.evolve(fresh, message=why, **counts)
     why = f"{failed.message}; from first touch it did not converge either ({fresh.message})"
-    return attrs.evolve(failed, message=why, **counts), NEIGHBOUR
+    return attrs.evolve(failed, message=why, **counts)
 
 
 # kernel tables depend only on profile, rheology, kernel and ζ: a small cache keyed by exactly

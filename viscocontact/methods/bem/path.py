@@ -235,15 +235,7 @@ class Path:
                 jump = self.snap(state.edges, Control.penetration_of(d_next),
                                  polish=d_next == d_end)
                 if jump is None and d_end is None:
-                    # the branch ends below the target load and no contact set lands past the
-                    # fold in penetration control: finish in load control
-                    log.event(f"the approach branch ends at penetration {d_prev:.6g} below the "
-                              "target load; solved in load control from there")
-                    final = eq.solve(state.edges, target)
-                    if final.outcome is Outcome.NOT_CONVERGED:
-                        return (self.closed_past_peak(peak, state, target)
-                                or self.in_load_steps(state, target) or final)
-                    return final
+                    return self.past_branch_end(state, d_prev, peak, target)
                 if jump is None:
                     return trial
                 if jump.outcome is Outcome.FULL_CONTACT:
@@ -256,6 +248,27 @@ class Path:
             if eq.adhesive:
                 ceiling = step
             log.event(f"approach step halved to {step:.3g}")
+
+    def past_branch_end(self, end: State, penetration: float, peak: tuple[float, float],
+                        target: Control) -> State:
+        """The equilibrium at the target load when the approach branch ends (a fold at
+        ``penetration``, the last converged state ``end``) below the target load and no contact
+        set lands past the fold in penetration control (:meth:`snap`). Tried in turn:
+
+        1. the target load solved from ``end`` in load control;
+        2. full contact, when the branch's load peaked (``peak``) below the target and has
+           fallen since (:meth:`closed_past_peak`);
+        3. the target load reached from ``end`` in steps of load (:meth:`in_load_steps`);
+
+        else the failure of the first.
+        """
+        self.log.event(f"the approach branch ends at penetration {penetration:.6g} below the "
+                       "target load; solved in load control from there")
+        final = self.eq.solve(end.edges, target)
+        if final.outcome is not Outcome.NOT_CONVERGED:
+            return final
+        return (self.closed_past_peak(peak, end, target) or self.in_load_steps(end, target)
+                or final)
 
     def in_load_steps(self, state: State, target: Control) -> State | None:
         """The equilibrium at the target load reached from ``state`` in steps of load, or None.

@@ -132,7 +132,10 @@ class EdgeSystem:
         self.n_edges = len(edges)
         self.counts = counts
         self.zones = zone_patterns(edges, spec, counts)
-        self.cache: dict = {}
+        # the last point this system evaluated, valid or rejected by the model: ``(key, out)``.
+        # The solvers ask for it again at once (the residual, then its derivatives); the
+        # :attr:`shared` evaluations hold the valid points of this solve's other systems
+        self._latest: tuple[bytes, tuple] | None = None
         self.evaluations = 0
         self.last_valid = None      # last edge vector that was a valid contact set
         self._last_size = None      # max |r| where the previous Jacobian was taken
@@ -149,8 +152,8 @@ class EdgeSystem:
         (:mod:`viscocontact.deadline`)."""
         check_deadline()
         key = x.tobytes()
-        if key in self.cache:
-            return self.cache[key]
+        if self._latest is not None and self._latest[0] == key:
+            return self._latest[1]
         if not np.all(np.isfinite(x)):
             return None, None, np.full(len(x), np.inf)
         new, changed, reason, full = repair(x, MIN_WIDTH, MIN_GAP)
@@ -183,7 +186,7 @@ class EdgeSystem:
             if self._on_limitation is not None:
                 self._on_limitation(self.limitation)
             r = np.full(len(x), np.inf)
-            self.cache = {key: (None, None, r)}
+            self._latest = (key, (None, None, r))
             return None, None, r
         self._previous = fields
         ctx = EdgeContext(fields, prep.kernel, prep.shape, self.spec, prep.shape.amplitude,
@@ -198,7 +201,7 @@ class EdgeSystem:
         """``out``, the valid evaluation at ``x``, as the last one: cached, and its field the
         model's start for the next."""
         self._previous = out[0]
-        self.cache = {key: out}
+        self._latest = (key, out)
         self.last_valid = x.copy()
         return out
 
