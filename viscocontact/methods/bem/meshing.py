@@ -80,6 +80,15 @@ INTERIOR_CAP = 512
 #: Lengths below this (q0-scaled) are not resolved by the edge zones: a memory length ζτ_i/τ
 #: below it changes areas by O(ζ/α) only, and resolving it costs elements at every edge.
 SMALLEST_RESOLVED = 1e-6
+#: With a finite edge advance δX, memory lengths shorter than this fraction of δX are not
+#: resolved either (nor the relaxation lengths of their branches): the energy balance over the
+#: advance sees the solid relaxed beyond a glassy layer that thin. On the adhesive wavy contact
+#: (Γ̃ = 0.01, β = 10, δX = 1e-4) the area moves by 1.7e-6 at ζ = 1e-6 and 4.7e-6 at ζ = 1e-5
+#: when such a layer is left unresolved, against the 6e-4 of the default grading; at
+#: ζ = 3e-5 (a third of δX) by 3e-4, so thicker layers stay resolved. At ζ = 1e-6 the edge element
+#: is then a tenth of δX instead of the 1e-6 floor: aligned with the advance, ten border elements
+#: instead of thirty graded ones (``docs/edges.md``, "Meshing the edge").
+THIN_MEMORY = 0.1
 
 
 #: Relative margin by which the shortest relaxation length must undercut ``edge_resolution`` times
@@ -92,6 +101,19 @@ def relaxation_lengths(kernel) -> np.ndarray:
     """The prepared kernel's relaxation lengths (none for a kernel that does not give them)."""
     lengths = getattr(kernel, "relaxation_lengths", None)
     return np.asarray(lengths(), dtype=float) if lengths is not None else np.empty(0)
+
+
+def branch_relaxation_lengths(kernel, floor: float) -> np.ndarray:
+    """The relaxation lengths of the branches whose memory length is resolved (at least
+    ``floor``). A creep spectrum's relaxation lengths interlace with its memory lengths, each
+    below its own (``r_1 < ζ_1 < r_2 < ζ_2 < ...``; a standard linear solid's ``ζ/β < ζ``), so
+    the i-th shortest belongs to the i-th shortest memory length. All of them when the kernel
+    gives as many memory lengths as relaxation lengths differently (they are not paired)."""
+    relaxation = np.sort(relaxation_lengths(kernel))
+    memory = np.sort(np.asarray(getattr(kernel, "zetas", ()), dtype=float))
+    if relaxation.size != memory.size:
+        return relaxation
+    return relaxation[memory >= floor]
 
 
 def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
@@ -111,7 +133,9 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     Without a finite edge advance, an elastic kernel (no dissipative branch) gets no zones: its
     edge fields are self-similar square-root fields, which eq. 4.22 with the calibrated fit
     already resolves. Neither does a kernel whose memory lengths are all below
-    ``SMALLEST_RESOLVED`` or above the period. A finite advance δX always gets zones aligned with
+    ``SMALLEST_RESOLVED`` or above the period. With a finite advance δX, memory lengths below
+    ``THIN_MEMORY·δX`` are not resolved either, nor the relaxation lengths of their branches
+    (:func:`branch_relaxation_lengths`). A finite advance δX always gets zones aligned with
     it, so that the enlarged contact of the energy balance is the bordered base mesh
     (:meth:`~viscocontact.contact.edges.EdgeContext.bordered_release`); other adhesion lengths
     (a cohesive zone) only set the smallest element.
@@ -120,19 +144,21 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     advance = [ell for ell in adhesion.resolved_lengths() if ell > 0]
     if disc.edge_resolution is None or not (memory or advance):
         return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading)
-    # memory lengths below SMALLEST_RESOLVED are not resolved, longer than the period need no zone
-    lengths = ([ell for ell in memory if SMALLEST_RESOLVED <= ell < TWO_PI]
+    edge_advance = float(adhesion.edge_advance())
+    # memory lengths below SMALLEST_RESOLVED, or well below a finite advance (THIN_MEMORY), are
+    # not resolved; longer than the period they need no zone
+    floor = max(SMALLEST_RESOLVED, THIN_MEMORY * edge_advance)
+    lengths = ([ell for ell in memory if floor <= ell < TWO_PI]
                + [ell for ell in advance if ell < TWO_PI])
     smallest = None
     if lengths:
         smallest = disc.edge_resolution * min(lengths)
-        relaxation = [ell for ell in relaxation_lengths(kernel) if ell < TWO_PI]
+        relaxation = [ell for ell in branch_relaxation_lengths(kernel, floor) if ell < TWO_PI]
         if relaxation and min(relaxation) < smallest * (1.0 - RELAXATION_MARGIN):
             # no edge element wider than the shortest relaxation length: the stress the slow
             # branches carry drops to zero across it at a trailing edge
             smallest = min(relaxation)
         smallest = max(smallest, SMALLEST_RESOLVED)
-    edge_advance = float(adhesion.edge_advance())
     return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading,
                     smallest=smallest, advance=edge_advance if edge_advance > 0 and smallest
                     else None)
