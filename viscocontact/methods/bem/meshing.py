@@ -83,11 +83,12 @@ SMALLEST_RESOLVED = 1e-6
 #: With a finite edge advance δX, memory lengths shorter than this fraction of δX are not
 #: resolved either (nor the relaxation lengths of their branches): the energy balance over the
 #: advance sees the solid relaxed beyond a glassy layer that thin. On the adhesive wavy contact
-#: (Γ̃ = 0.01, β = 10, δX = 1e-4) the area moves by 1.7e-6 at ζ = 1e-6 and 4.7e-6 at ζ = 1e-5
-#: when such a layer is left unresolved, against the 6e-4 of the default grading; at
-#: ζ = 3e-5 (a third of δX) by 3e-4, so thicker layers stay resolved. At ζ = 1e-6 the edge element
-#: is then a tenth of δX instead of the 1e-6 floor: aligned with the advance, ten border elements
-#: instead of thirty graded ones (``docs/edges.md``, "Meshing the edge").
+#: (Γ̃ = 0.01, β = 10, δX = 1e-4) the area moves by 1.7e-6, 2.3e-6 and 3.2e-5 at ζ = 1e-6, 3e-6
+#: and 8e-6 when such a layer is left unresolved, against the 6e-4 of the default grading; a
+#: layer of a third of δX (ζ = 3e-5) left unresolved moved it by 3e-4, so thicker layers stay
+#: resolved. At ζ = 1e-6 the edge element is then a tenth of δX instead of the 1e-6 floor:
+#: aligned with the advance, ten border elements instead of thirty graded ones
+#: (``docs/edges.md``, "Meshing the edge").
 THIN_MEMORY = 0.1
 
 
@@ -108,7 +109,7 @@ def branch_relaxation_lengths(kernel, floor: float) -> np.ndarray:
     ``floor``). A creep spectrum's relaxation lengths interlace with its memory lengths, each
     below its own (``r_1 < ζ_1 < r_2 < ζ_2 < ...``; a standard linear solid's ``ζ/β < ζ``), so
     the i-th shortest belongs to the i-th shortest memory length. All of them when the kernel
-    gives as many memory lengths as relaxation lengths differently (they are not paired)."""
+    gives a different number of each (they cannot be paired)."""
     relaxation = np.sort(relaxation_lengths(kernel))
     memory = np.sort(np.asarray(getattr(kernel, "zetas", ()), dtype=float))
     if relaxation.size != memory.size:
