@@ -23,7 +23,6 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from scipy.optimize import brentq
 
 from viscocontact.adhesion import EnergyBalance, NoAdhesion
 from viscocontact.errors import ConvergenceError, ValidationError
@@ -183,10 +182,7 @@ def test_area_lies_between_the_elastic_limits(log_beta, log_zeta, p):
 
 
 # ---- γ̃ from 0 up to and past the jump into full contact ----------------------------------------
-def _closing_gamma(modulus_ratio: float = 1.0) -> float:
-    """Johnson: Γ̃ above which the wavy contact closes at p̃∞ = 0 (the closure maximum is 0)."""
-    return brentq(lambda G: JohnsonWavy(Gamma=G, modulus_ratio=modulus_ratio).closure()[1],
-                  1e-4 * modulus_ratio, modulus_ratio, xtol=1e-14)
+_closing_gamma = JohnsonWavy.closing_gamma
 
 
 GAMMA_CLOSE = _closing_gamma()      # ≈ 0.0812

@@ -83,6 +83,14 @@ class JohnsonWavy:
                               options={"xatol": 1e-13})
         return float(res.x), float(self.mean_pressure(res.x))
 
+    @staticmethod
+    def closing_gamma(modulus_ratio: float = 1.0) -> float:
+        """``Γ̃`` above which the wavy contact closes at zero load (the maximum of ``p̃∞`` on
+        the stable branch, :meth:`closure`, is 0 there): about 0.0812 for ``β = 1``."""
+        return float(brentq(
+            lambda G: JohnsonWavy(Gamma=G, modulus_ratio=modulus_ratio).closure()[1],
+            1e-4 * modulus_ratio, modulus_ratio, xtol=1e-14))
+
     def area_at_pressure(self, p):
         """Contact area on the stable (load-controlled) branch at mean pressure ``p``; None below
         pull-off, ``2π`` above closure (full contact)."""

@@ -372,13 +372,10 @@ def _central_stiffness(path, state, eps=5e-5):
 def _wavy_at_zero_load(fraction):
     """Elastic wavy contact (Λ̃ = 0.1) at p̃∞ = 0 with Γ̃ a fraction of the closing one, and
     Johnson's solution for it."""
-    from scipy.optimize import brentq
-
     from viscocontact.reference.johnson import JohnsonWavy
     from viscocontact.rheology import Elastic
 
-    closing = brentq(lambda G: JohnsonWavy(Gamma=G).closure()[1], 1e-4, 1.0, xtol=1e-14)
-    gamma = fraction * closing
+    gamma = fraction * JohnsonWavy.closing_gamma()
     problem = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(),
                              adhesion=EnergyBalance(gamma=gamma * 0.01), solver=Newton(),
                              mean_pressure=0.0)

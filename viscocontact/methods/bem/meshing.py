@@ -117,6 +117,12 @@ def branch_relaxation_lengths(kernel, floor: float) -> np.ndarray:
     return relaxation[memory >= floor]
 
 
+def memory_floor(adhesion) -> float:
+    """Shortest memory length the edge zones resolve: ``SMALLEST_RESOLVED``, or
+    ``THIN_MEMORY·δX`` with a finite edge advance δX when that is longer."""
+    return max(SMALLEST_RESOLVED, THIN_MEMORY * float(adhesion.edge_advance()))
+
+
 def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     """The mesh of a problem: eq. 4.22 plus edge zones down to ``edge_resolution`` times the
     smallest physical length (memory lengths of the dissipative branches, adhesion lengths), and
@@ -148,7 +154,7 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     edge_advance = float(adhesion.edge_advance())
     # memory lengths below SMALLEST_RESOLVED, or well below a finite advance (THIN_MEMORY), are
     # not resolved; longer than the period they need no zone
-    floor = max(SMALLEST_RESOLVED, THIN_MEMORY * edge_advance)
+    floor = memory_floor(adhesion)
     lengths = ([ell for ell in memory if floor <= ell < TWO_PI]
                + [ell for ell in advance if ell < TWO_PI])
     smallest = None

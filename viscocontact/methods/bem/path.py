@@ -494,12 +494,17 @@ class Path:
         return self.predict and self.eq.analytic and self.eq.jacobian_solver
 
     def tangent(self, state: State, load: bool) -> np.ndarray | None:
+        """The path's predictor: :meth:`branch_tangent` when the path predicts, else None."""
+        return self.branch_tangent(state, load) if self.predict else None
+
+    @staticmethod
+    def branch_tangent(state: State, load: bool) -> np.ndarray | None:
         """``dx/dΔ̃`` (``load``: ``dx/dp̃∞``) at a converged state, from the derivatives of the
         state's own edge system (``J dx = -∂r/∂Δ̃``; under a load change the penetration follows
         from the bordered system ``[[J, ∂r/∂Δ̃], [∂p̃∞/∂x, ∂p̃∞/∂Δ̃]]``); None without analytic
         derivatives or when the system is singular."""
         system = state.system
-        if not self.predict or system is None or np.size(state.edges) == 0:
+        if system is None or np.size(state.edges) == 0:
             return None
         d = system.derivatives(np.asarray(state.edges, dtype=float))
         if d is None:
@@ -677,16 +682,14 @@ class Path:
         five at the largest mesh of the path.
         """
         system = state.system
-        if system is None or state.fields is None or np.size(state.edges) == 0:
+        if system is None or state.fields is None:
+            return None
+        # dx/dΔ̃ or dx/dp̃∞, the system's own control (its derivatives are cached at the edges)
+        t = Path.branch_tangent(state, system.control.is_load)
+        if t is None:
             return None
         d = system.derivatives(np.asarray(state.edges, dtype=float))
-        if d is None:
-            return None
         p_x, p_d = d.pressure[:-1], float(d.pressure[-1])
-        try:
-            t = -np.linalg.solve(d.jacobian, d.control)
-        except np.linalg.LinAlgError:
-            return None
         if system.control.is_load:
             with np.errstate(divide="ignore"):
                 k = p_d / (1.0 - float(p_x @ t))

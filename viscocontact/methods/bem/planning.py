@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from ...contact.mesh import ALIGN_MAX
 from ...plan import PlanStep
-from .meshing import INTERIOR_CAP, SMALLEST_RESOLVED, THIN_MEMORY, mesh_spec
+from .meshing import INTERIOR_CAP, SMALLEST_RESOLVED, memory_floor, mesh_spec
 from .system import residual_scale
 
 
@@ -26,8 +26,7 @@ def _mesh_step(problem, spec, kernel) -> PlanStep:
         return PlanStep(stage="mesh", choice=base + ", no edge zones", reason=why)
     aligned = (" aligned with δX" if spec.advance and spec.advance <= ALIGN_MAX * spec.smallest
                else "")
-    thin = ([z for z in kernel.zetas if z < THIN_MEMORY * spec.advance] if spec.advance
-            else [])
+    thin = [z for z in kernel.zetas if z < memory_floor(problem.adhesion)] if spec.advance else []
     return PlanStep(stage="mesh",
                     choice=f"{base} + edge zones from an edge element of {spec.smallest:.3g}{aligned}, "
                            f"grading {spec.grading:g}",
@@ -36,8 +35,9 @@ def _mesh_step(problem, spec, kernel) -> PlanStep:
                        f"= {problem.adhesion.quasi_static_zone:.3g}, or the memory length)"
                        if _cohesive(problem.adhesion) else "")
                     + (f"; memory length(s) {', '.join(f'{z:.3g}' for z in thin)} below "
-                       f"{THIN_MEMORY:g} δX left unresolved: the balance over the advance sees "
-                       "the solid relaxed beyond so thin a glassy layer" if thin else ""))
+                       f"{memory_floor(problem.adhesion):.3g} left unresolved: the balance over "
+                       "the advance sees the solid relaxed beyond so thin a glassy layer"
+                       if thin else ""))
 
 
 #: A cohesive zone spanning fewer smallest elements than this is only partly resolved (the
