@@ -143,13 +143,28 @@ class Path:
         ceiling = np.inf                  # largest step allowed since the last failed one
         trend = None                      # (Δ̃, edge speed, edges) of the last state
         fold = None                       # the fold estimated ahead of the current state
+        fold_edge = None                  # the edge that folds there (None: the fastest)
+        failed = None                     # the penetration of the last failed step
         fresh = True                      # the current state is new (its trend not taken)
         crossed = False                   # a crossing was tried from the current state
+        leap = False                      # the current state was reached past a fold
         while True:
             fields = state.fields
             if fields.mean_pressure > peak[0]:
                 peak = (fields.mean_pressure, d_prev)
             if d_end is None and fields.mean_pressure >= target.value:
+                if (leap and below is not None and below.fields is not None
+                        and below.fields.mean_pressure < target.value):
+                    # the load rose past the target across a fold: the branch before it may
+                    # reach the target first (in load control the contact stops there)
+                    begin = self.predicted(below, target.value - below.fields.mean_pressure,
+                                           load=True)
+                    early = eq.solve(begin, target)
+                    if (early.outcome is Outcome.CONVERGED
+                            and not self.jumped(begin, below.edges, early.edges)):
+                        log.event("the target load solved from the state before the last step, "
+                                  "which passed a fold")
+                        return early
                 final = eq.solve(self.predicted(state, target.value - fields.mean_pressure,
                                                 load=True), target)
                 if final.outcome is Outcome.NOT_CONVERGED:
@@ -180,6 +195,7 @@ class Path:
                 tangent = self.tangent(state, False) if self.quick and eq.adhesive else None
                 speed = self.edge_speed(state, tangent)
                 sample = (d_prev, speed, np.size(state.edges))
+                fold_edge = None
                 fold = (self.fold_ahead(trend[:2], sample[:2])
                         if trend is not None and trend[2] == sample[2] else None)
                 trend = None if speed is None else sample
@@ -187,7 +203,13 @@ class Path:
                 crossed = True
                 d_cross = min(d_next, fold + FOLD_MARGIN * self.path_step)
                 jump = self.cross(state, tangent, Control.penetration_of(d_cross),
-                                  polish=d_cross == d_end)
+                                  polish=d_cross == d_end, lead=fold_edge)
+                if jump is None and failed == d_next:
+                    # the fold estimated after a failed step was not crossed: halve the step
+                    # rather than fail at the same penetration again
+                    step = self.halved(step)
+                    ceiling = step
+                    continue
                 if jump is not None:
                     if jump.outcome is Outcome.FULL_CONTACT:
                         if d_end is None and not self.closed.supports(target.value):
@@ -202,7 +224,7 @@ class Path:
                         trend = None
                     below = state
                     state, d_prev = jump, d_cross
-                    ceiling, fresh, crossed = np.inf, True, False
+                    ceiling, fresh, crossed, leap = np.inf, True, False, True
                     continue
             # the fallback march only once the step is small enough for a fold to be likely
             last = step < self.path_step / 16
@@ -213,10 +235,11 @@ class Path:
                              probation=self.probation, pace=() if last else self.pace,
                              reduction=0.0 if d_next == d_end else STEP_REDUCTION)
             if trial.outcome is Outcome.CONVERGED:
+                leap = last
                 if eq.adhesive and self.jumped(start, state.edges, trial.edges):
                     # the fallback march crossed a fold: the failures before it say nothing
                     # of the landing branch, whose steps grow from this one
-                    ceiling, trend = np.inf, None
+                    ceiling, trend, leap = np.inf, None, True
                 else:
                     # a step size that failed is not tried again at once: the steps after a
                     # failure grow from the halved one by CEILING_GROWTH at most (the
@@ -241,13 +264,23 @@ class Path:
                 if jump.outcome is Outcome.FULL_CONTACT:
                     return jump
                 log.event(f"contact jumped at penetration {d_next:.6g}")
+                below, leap = state, True
                 state, d_prev = jump, d_next
                 step, ceiling, trend, fresh, crossed = self.path_step, np.inf, None, True, False
                 continue
-            step *= 0.5
+            if eq.adhesive and not crossed and (fold is None or not d_prev < fold < d_next):
+                ahead = self.fold_from_start(state, tangent, start, d_prev, d_next - d_prev)
+                if (ahead is not None and d_prev < ahead[0] < d_next
+                        and (d_end is not None or not self.load_before(state, ahead[0], target))):
+                    # the failed step's start says where the branch folds (before the target
+                    # load): cross there instead of halving the step down to it
+                    fold, fold_edge, failed = ahead[0], ahead[1], d_next
+                    log.event(f"approach step to {d_next:.6g} failed; its start's residual puts "
+                              f"the branch's fold at {fold:.6g}")
+                    continue
+            step = self.halved(step)
             if eq.adhesive:
                 ceiling = step
-            log.event(f"approach step halved to {step:.3g}")
 
     def past_branch_end(self, end: State, penetration: float, peak: tuple[float, float],
                         target: Control) -> State:
@@ -405,7 +438,62 @@ class Path:
         a, b = 1.0 / s0**2, 1.0 / s1**2
         return float(d1 + (d1 - d0) * b / (a - b))
 
-    def cross(self, state: State, tangent, control: Control, polish: bool = False) -> State | None:
+    def halved(self, step: float) -> float:
+        """Half the approach step, with an event in the log."""
+        self.log.event(f"approach step halved to {0.5 * step:.3g}")
+        return 0.5 * step
+
+    @staticmethod
+    def load_before(state: State, penetration: float, target: Control) -> bool:
+        """Whether the branch through ``state`` reaches the target load before ``penetration``
+        by its stiffness (:meth:`branch_stiffness`; True when that is unknown)."""
+        k = Path.branch_stiffness(state)
+        if k is None:
+            return True
+        gain = k * (penetration - float(state.fields.penetration))
+        return bool(float(state.fields.mean_pressure) + gain >= target.value)
+
+    def fold_from_start(self, state: State, tangent, start, penetration: float,
+                        change: float) -> tuple[float, int] | None:
+        """Where the branch through ``state`` (at ``penetration``) folds within a failed step
+        of ``change`` that started from ``start``, predicted along the ``tangent``:
+        ``(Δ̃*, edge)``, or None.
+
+        The tangent cancels the residual's linear part, so at the start ``x0 + h·t`` the
+        residual is ``½h²·r''`` with ``r'' = D²r[(t, 1), (t, 1)]``, and the branch's curvature
+        is ``x'' = -J⁻¹r''`` (``J x'' + r'' = 0`` along the branch; one residual evaluation and
+        the state's Jacobian). On a parabola ``Δ̃* - Δ̃ = a(x - x*)²`` an edge's ``x'/(2x'')``
+        is its distance to the fold, positive for an edge that speeds up. The earliest fold
+        within the step is taken, and its edge leads the crossing (:meth:`cross`): on the thesis
+        rough profile the edge that folds first is often not the fastest one, whose own fold
+        lies beyond the step (``docs/performance.md`` §21). One state gives it, where
+        :meth:`fold_ahead` needs two of the same contact set (none right after a crossing, a
+        birth or a merge). None when the start was scaled down (:meth:`predicted`), no edge
+        folds within the step, or the derivatives are missing.
+        """
+        x0 = np.asarray(state.edges, dtype=float)
+        system = state.system
+        if tangent is None or system is None or x0.size == 0 or change <= 0:
+            return None
+        if not np.array_equal(np.asarray(start, dtype=float), x0 + tangent * change):
+            return None
+        d = system.derivatives(x0)
+        r = self.eq.residual_at(start, Control.penetration_of(penetration + change))
+        if d is None or r is None or not np.all(np.isfinite(r)):
+            return None
+        try:
+            curvature = -np.linalg.solve(d.jacobian, 2.0 * np.asarray(r) / change**2)
+        except np.linalg.LinAlgError:
+            return None
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ahead = np.where(tangent * curvature > 0, tangent / (2.0 * curvature), np.inf)
+        lead = int(np.argmin(ahead))
+        if not ahead[lead] < change:
+            return None
+        return penetration + float(ahead[lead]), lead
+
+    def cross(self, state: State, tangent, control: Control, polish: bool = False,
+              lead: int | None = None) -> State | None:
         """The equilibrium at ``control`` past a fold of the branch through ``state``, reached by
         the fastest edge of the branch's tangent; None when none is found.
 
@@ -433,7 +521,8 @@ class Path:
         if tangent is None or x0.size == 0:
             return None
         half = 0.5 * (x0[1::2] - x0[0::2])
-        lead = int(np.argmax(np.abs(tangent) / np.repeat(half, 2)))
+        if lead is None:
+            lead = int(np.argmax(np.abs(tangent) / np.repeat(half, 2)))
         direction = float(np.sign(tangent[lead]))
         if direction == 0.0:
             return None
