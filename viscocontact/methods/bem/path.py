@@ -195,7 +195,7 @@ class Path:
                 tangent = self.tangent(state, False) if self.quick and eq.adhesive else None
                 speed = self.edge_speed(state, tangent)
                 sample = (d_prev, speed, np.size(state.edges))
-                fold_edge = None
+                fold_edge, failed = None, None
                 fold = (self.fold_ahead(trend[:2], sample[:2])
                         if trend is not None and trend[2] == sample[2] else None)
                 trend = None if speed is None else sample
@@ -495,7 +495,8 @@ class Path:
     def cross(self, state: State, tangent, control: Control, polish: bool = False,
               lead: int | None = None) -> State | None:
         """The equilibrium at ``control`` past a fold of the branch through ``state``, reached by
-        the fastest edge of the branch's tangent; None when none is found.
+        the fastest edge of the branch's tangent (or by the edge ``lead``, the one found to fold
+        first by :meth:`fold_from_start`); None when none is found.
 
         Past a fold the edges have no equilibrium near their last one: the edge that ran fastest
         towards the fold goes on (a neck closing, a contact spreading over a valley) until it
@@ -515,7 +516,9 @@ class Path:
         has no equilibrium near the landing (a neck about to close), Broyden found none in 30
         iterations (35-47 evaluations, 14 s on a crowded corner's ten contacts) before the
         fallback march merged the contacts in a few evaluations; on probation it hands over
-        after five (``docs/performance.md`` §18).
+        after five (``docs/performance.md`` §18). Unless the landing is the end of the path
+        (``polish``), it is an intermediate state, solved to :data:`STEP_REDUCTION` of its start's
+        residual as the approach steps are (§21).
         """
         x0 = np.asarray(state.edges, dtype=float)
         if tangent is None or x0.size == 0:
@@ -551,7 +554,7 @@ class Path:
         if start is None:
             return None
         out = self.eq.solve(start, control, polish=polish, budget=APPROACH_BUDGET,
-                            probation=self.probation)
+                            probation=self.probation, reduction=0.0 if polish else STEP_REDUCTION)
         return out if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT) else None
 
     @property
