@@ -26,7 +26,8 @@ def _mesh_step(problem, spec, kernel) -> PlanStep:
         return PlanStep(stage="mesh", choice=base + ", no edge zones", reason=why)
     aligned = (" aligned with δX" if spec.advance and spec.advance <= ALIGN_MAX * spec.smallest
                else "")
-    thin = [z for z in kernel.zetas if z < memory_floor(problem.adhesion)] if spec.advance else []
+    floor = memory_floor(problem.adhesion)
+    thin = [z for z in kernel.zetas if z < floor] if spec.advance else []
     return PlanStep(stage="mesh",
                     choice=f"{base} + edge zones from an edge element of {spec.smallest:.3g}{aligned}, "
                            f"grading {spec.grading:g}",
@@ -35,7 +36,7 @@ def _mesh_step(problem, spec, kernel) -> PlanStep:
                        f"= {problem.adhesion.quasi_static_zone:.3g}, or the memory length)"
                        if _cohesive(problem.adhesion) else "")
                     + (f"; memory length(s) {', '.join(f'{z:.3g}' for z in thin)} below "
-                       f"{memory_floor(problem.adhesion):.3g} left unresolved: the balance over "
+                       f"{floor:.3g} left unresolved: the balance over "
                        "the advance sees the solid relaxed beyond so thin a glassy layer"
                        if thin else ""))
 
