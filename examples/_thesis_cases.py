@@ -131,10 +131,10 @@ def sweep_arguments(parser: argparse.ArgumentParser, default_dx: str = "0,1e-4,1
     parser.add_argument("--seeds", default=None, help="override the seeds (0,1 or 0:20)")
     parser.add_argument("--pressures", default=None, help="override the p̃∞ list")
     parser.add_argument("--penetrations", default=None, help="override the Δ̃ list")
-    parser.add_argument("--zeta-step", type=float, default=None, metavar="DECADES",
-                        help="adhesive sweeps: a slow change of speed, with intermediate "
-                             "equilibria at most this many decades of ζ apart (default: one "
-                             "step per point); the files get a _step<DECADES> tag")
+    parser.add_argument("--history", choices=("approach", "speed-ramp"), default="approach",
+                        help="how the adhesive points are reached: 'approach' (default: "
+                             "loading from first touch at each ζ) or 'speed-ramp' (a slow "
+                             "change of ζ at constant load); the ramp's files get a _ramp tag")
 
 
 def sweep_family(profile: str, control: str, args) -> list:
@@ -160,17 +160,18 @@ def sweep_family(profile: str, control: str, args) -> list:
         sweep = Sweep(scene=adhesionless_scene(profile), **common)
         path = Path(args.out) / f"sweep_{profile}_{control}_none.h5"
         out.append((None, compute(sweep, path, args)))
-    step = getattr(args, "zeta_step", None)
+    history = getattr(args, "history", "approach")
+    ramp = "" if history == "approach" else "_ramp"
     for i, dx in enumerate(dxs):
-        sweep = Sweep(scene=scene(profile, edge_perturbation=dx), zeta_step=step,
+        sweep = Sweep(scene=scene(profile, edge_perturbation=dx), history=history,
                       pair=(i == 0 and profile not in SEPARATE_ADHESIONLESS), **common)
-        tag = dx_tag(dx) + ("" if step is None else f"_step{step:g}")
+        tag = dx_tag(dx) + ramp
         path = Path(args.out) / f"sweep_{profile}_{control}_{tag}.h5"
         out.append((f"δX = {dx:g}", compute(sweep, path, args)))
     ranges = floats(getattr(args, "rough_cohesive_ranges", "") or "") if profile == "rough" else []
     for h0 in ranges:
-        sweep = Sweep(scene=cohesive_scene(profile, h0), zeta_step=step, pair=False, **common)
-        tag = f"md{h0:g}nm" + ("" if step is None else f"_step{step:g}")
+        sweep = Sweep(scene=cohesive_scene(profile, h0), history=history, pair=False, **common)
+        tag = f"md{h0:g}nm" + ramp
         path = Path(args.out) / f"sweep_{profile}_{control}_{tag}.h5"
         out.append((f"h0 = {h0:g} nm", compute(sweep, path, args)))
     return out

@@ -56,7 +56,7 @@ def family(args) -> list:
     ns.zetas = args.zetas or size["zetas"]
     ns.pressures = args.pressures or size["pressures"]
     ns.penetrations = None
-    ns.zeta_step = None
+    ns.history = "approach"
     return cases.sweep_family("rough", "mean_pressure", ns)
 
 

@@ -66,14 +66,15 @@ def cohesive_scene(h0_nm: float):
     return Scene.from_dict(data)
 
 
-def sweep(scene, args, load: float, *, pair: bool, zetas=None, continuation: bool = True):
-    """The load-controlled ζ-sweep of ``scene`` at p̃∞ = ``load`` (one study file per load)."""
+def sweep(scene, args, load: float, *, pair: bool, zetas=None):
+    """The load-controlled ζ-sweep of ``scene`` at p̃∞ = ``load`` (one study file per load),
+    every point by the approach at its own ζ (the default history)."""
     from viscocontact.problem import Discretization
     from viscocontact.studies import Sweep
 
     return Sweep(scene=scene, zetas=cases.floats(args.zetas) if zetas is None else zetas,
                  loads=[load], control="mean_pressure", pair=pair,
-                 continuation=continuation, discretization=Discretization(elements=ELEMENTS))
+                 discretization=Discretization(elements=ELEMENTS))
 
 
 def compute(study, path: Path, args):
@@ -92,21 +93,12 @@ def compute(study, path: Path, args):
 
 
 def cohesive_family(h0: float, args, out: Path) -> list:
-    """Per load, the continued sweep of range ``h0`` and, for the ζ where it did not converge,
-    the same points from first touch (``*_retry.h5``): ``[StudyData, ...]``, each load's
-    continued sweep before its retry."""
+    """Per load, the sweep of range ``h0``: ``[StudyData, ...]``, one per load."""
     scene = cohesive_scene(h0)
     family = []
     for load in cases.floats(args.pressures):
         name = f"cohesive_wavy_{md_tag(h0)}_p{load:g}"
-        first = compute(sweep(scene, args, load, pair=False), out / f"{name}.h5", args)
-        family.append(first)
-        p = first.points
-        failed = sorted({float(p["zeta"][i]) for i in range(len(first))
-                         if not p["converged"][i]})
-        if failed:
-            family.append(compute(sweep(scene, args, load, pair=False, zetas=failed,
-                                        continuation=False), out / f"{name}_retry.h5", args))
+        family.append(compute(sweep(scene, args, load, pair=False), out / f"{name}.h5", args))
     return family
 
 
@@ -320,7 +312,7 @@ def main(argv=None) -> list[Path]:
                   + [(md_tag(h0), cohesive_scene(h0), False) for h0 in ranges])
         for tag, scene, pair in scenes:
             path = out / f"cohesive_wavy_{tag}_p{loads[0]:g}_low.h5"
-            compute(sweep(scene, args, loads[0], pair=pair, zetas=low, continuation=False),
+            compute(sweep(scene, args, loads[0], pair=pair, zetas=low),
                     path, args)
             written.append(path)
     if not args.no_zones:

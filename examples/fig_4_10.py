@@ -20,9 +20,9 @@ those ranges h0 in nm instead of the energy balance (``sweep_rough_mean_pressure
 ``docs/cohesive.md``).
 
 Usage: ``python examples/fig_4_10.py [--out DIR] [--full] [--workers N]
-[--edge-perturbations 0,1e-4,1e-3] [--zetas 1e-3,1] [--zeta-step 0.05]
-[--rough-cohesive-ranges 1]`` (``--zeta-step``: the adhesive curves on a slow change of speed,
-see ``docs/figures.md``, "Fig. 4.10 at full size")
+[--edge-perturbations 0,1e-4,1e-3] [--zetas 1e-3,1] [--history speed-ramp]
+[--rough-cohesive-ranges 1]`` (``--history``: how the adhesive points are reached, the
+approach by default or a slow change of speed; see ``docs/figures.md``)
 """
 from __future__ import annotations
 

@@ -22,8 +22,8 @@ Writes ``sweep_<profile>_<control>_dx<δX>.h5`` (shared with ``fig_4_10.py``: a 
 
 Usage: ``python examples/fig_4_7.py [--out DIR] [--full] [--workers N]
 [--edge-perturbations 0,1e-4,1e-3] [--profiles rough,wavy] [--zetas 1e-3,1]
-[--zeta-step 0.05] [--rough-cohesive-ranges 1]`` (``--zeta-step``: the adhesive curves on a
-slow change of speed, see ``docs/figures.md``, "Which equilibrium: the history of a point";
+[--history speed-ramp] [--rough-cohesive-ranges 1]`` (``--history``: how the adhesive points
+are reached, the approach by default or a slow change of speed, see ``docs/figures.md``;
 ``--rough-cohesive-ranges``: rough curves with Maugis–Dugdale zones of those ranges in nm,
 ``docs/cohesive.md``)
 """

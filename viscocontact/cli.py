@@ -322,12 +322,13 @@ def _configure_sweep(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-pair", dest="pair", action="store_false",
                         help="only the scene's adhesion (default: an adhesive scene is swept "
                              "with its adhesionless twin)")
-    parser.add_argument("--no-continuation", dest="continuation", action="store_false",
-                        help="solve every point from first touch instead of from its neighbour")
-    parser.add_argument("--zeta-step", metavar="DECADES", default="none",
-                        help="largest adhesive continuation step in decades of ζ "
-                             "(intermediate equilibria are solved, not stored); default "
-                             "'none': one step between neighbours")
+    parser.add_argument("--history", choices=("approach", "speed-ramp"), default="approach",
+                        help="how each adhesive point is reached: 'approach' (default: "
+                             "loading from first touch at its own ζ) or 'speed-ramp' (a slow "
+                             "change of ζ at constant load from the first ζ); stored with "
+                             "every point")
+    parser.add_argument("--ramp-tolerance", metavar="TOL", type=float, default=None,
+                        help="the speed ramp's step-control tolerance (default 0.02)")
     _add_study_options(parser, "sweep")
 
 
@@ -347,17 +348,14 @@ def _run_sweep(args: argparse.Namespace) -> int:
             if args.loads is None and args.control != scene.load.controlled:
                 raise ValidationError("--loads", None, f"values of {args.control} (the scene "
                                                        f"is in {scene.load.controlled} control)")
-        if args.zeta_step.strip().lower() == "none":
-            step = None
-        else:
-            try:
-                step = float(args.zeta_step)
-            except ValueError:
-                raise ValidationError("--zeta-step", args.zeta_step,
-                                      "decades of ζ in (0, 10], or 'none'") from None
+        history: dict = {"name": args.history}
+        if args.ramp_tolerance is not None:
+            if args.history != "speed-ramp":
+                raise ValidationError("--ramp-tolerance", args.ramp_tolerance,
+                                      "only with --history speed-ramp")
+            history["tolerance"] = args.ramp_tolerance
         return Sweep(scene=scene, zetas=parse_numbers("--zetas", args.zetas, log=True),
-                     seeds=_seeds(args), pair=args.pair, continuation=args.continuation,
-                     zeta_step=step,
+                     seeds=_seeds(args), pair=args.pair, history=history,
                      fields=args.fields, discretization=_discretization(args), **options)
 
     return _run_study_file(args, "sweep", build)

@@ -53,12 +53,11 @@ class WavyStudy:
             "sliding": {"zeta": float(self.zetas[0])}})
 
     def sweep(self):
-        """The sweep: every point from first touch (adhesive equilibria are path dependent, and
-        the default study shows the first-touch branch), adhesive and adhesionless."""
+        """The sweep under the default history, the approach: every adhesive point loaded from
+        first touch at its own ζ, adhesive and adhesionless."""
         from .studies import Sweep
 
-        return Sweep(scene=self.scene(), zetas=[float(z) for z in self.zetas], pair=True,
-                     continuation=False)
+        return Sweep(scene=self.scene(), zetas=[float(z) for z in self.zetas], pair=True)
 
     def run(self, out=".", *, workers: int = 1, progress=sys.stderr) -> list[Path]:
         """Compute the study into ``out/study.h5`` (replacing it) and draw it; the files written."""

@@ -64,16 +64,16 @@ def test_fig_4_7_tiny_rough(tmp_path):
         assert data.scene.to_dict()["solver"]["kind"] == "bisection"
 
 
-def test_fig_4_10_zeta_step_writes_a_slow_history_of_its_own(tmp_path):
-    """``--zeta-step``: the adhesive sweep passes intermediate equilibria (a file of its own);
-    on the sinusoid, with one equilibrium per ζ, it ends where the one-step sweep does."""
+def test_fig_4_10_speed_ramp_writes_a_history_of_its_own(tmp_path):
+    """``--history speed-ramp``: the adhesive sweep follows a slow change of speed (a file of
+    its own); on the sinusoid, with one equilibrium per ζ, it ends where the approach does."""
     common = ("--profiles", "wavy", "--edge-perturbations", "1e-4", "--zetas", "1e3,10")
     run_script("fig_4_10.py", tmp_path, *common)
-    run_script("fig_4_10.py", tmp_path, *common, "--zeta-step", "0.5")
-    jump = check_sweep(tmp_path / "sweep_wavy_mean_pressure_dx1e-04.h5")
-    slow = check_sweep(tmp_path / "sweep_wavy_mean_pressure_dx1e-04_step0.5.h5")
-    assert jump.study.zeta_step is None and slow.study.zeta_step == 0.5
-    a, b = jump.table("area"), slow.table("area")
+    run_script("fig_4_10.py", tmp_path, *common, "--history", "speed-ramp")
+    approach = check_sweep(tmp_path / "sweep_wavy_mean_pressure_dx1e-04.h5")
+    ramp = check_sweep(tmp_path / "sweep_wavy_mean_pressure_dx1e-04_ramp.h5")
+    assert approach.study.history.name == "approach" and ramp.study.history.name == "speed-ramp"
+    a, b = approach.table("area"), ramp.table("area")
     np.testing.assert_allclose(b, a, rtol=1e-7)
 
 

@@ -129,9 +129,12 @@ def test_dask_cluster_gives_the_serial_result(tmp_path, scene, serial):
     identical(a.points, b.points)
 
 
-def test_bad_zeta_step(tmp_path, scene, capsys):
-    for bad, field in (("fast", "--zeta-step"), ("0", "sweep.zeta_step"), ("12", "sweep.zeta_step")):
-        assert main(["sweep", str(scene), "--zetas", "1,0.01", "--zeta-step", bad,
+def test_bad_history_options(tmp_path, scene, capsys):
+    for extra, field, allowed in ((["--ramp-tolerance", "0.01"], "--ramp-tolerance",
+                                   "only with --history speed-ramp"),
+                                  (["--history", "speed-ramp", "--ramp-tolerance", "0"],
+                                   "history.tolerance", "(0, 0.5]")):
+        assert main(["sweep", str(scene), "--zetas", "1,0.01", *extra,
                      "--out", str(tmp_path / "x.h5")]) == 2
         err = capsys.readouterr().err
-        assert field in err and "(0, 10]" in err and "Traceback" not in err
+        assert field in err and allowed in err and "Traceback" not in err

@@ -243,6 +243,7 @@ class Cycle(Study):
             predicted = secant_start(records, "target", target, phase=phase)
             initial = initial if predicted is None else predicted
         spec = PointSpec(chain=chain.index, step=k, phase=phase, started_from=started_from,
+                         history={"name": "cycle"},
                          fields=self.fields, labels=dict(chain.labels),
                          discretization=(None if self.discretization is None
                                          else attrs.asdict(self.discretization)))

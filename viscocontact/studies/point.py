@@ -22,7 +22,6 @@ from typing import Any, Iterable, Mapping
 import attrs
 import numpy as np
 
-from .._stepping import march
 from ..errors import TimeLimitExceeded
 
 #: Record columns written for every point: name -> kind (``int``, ``float``, ``bool``, ``str`` or
@@ -40,17 +39,21 @@ COLUMNS: dict[str, str] = {
     "edge_perturbation": "float", "min_gap": "float", "seconds": "float", "edges": "edges",
     # the solution method that computed the point and its error estimate
     "method": "str", "error_estimate": "float",
+    # the history that reached the point (studies.history), the events met on the way since the
+    # chain's previous point (a JSON list of typed records) and the speed ramp's path state
+    "history": "str", "events": "str", "ramp": "str",
 }
 
 #: Columns added after the first study-file format, with the value a file written before them
 #: reads as (``""``: the method was not recorded; it was the BEM).
-LATER_COLUMNS: dict[str, Any] = {"method": "", "error_estimate": float("nan")}
+LATER_COLUMNS: dict[str, Any] = {"method": "", "error_estimate": float("nan"), "history": "",
+                                 "events": "[]", "ramp": ""}
 
 #: Columns that depend on the machine's speed, not on the numerics (left out of comparisons).
 TIMING_COLUMNS = ("seconds",)
 
 #: ``started_from`` values.
-FIRST_TOUCH, NEIGHBOUR, NO_CONTACT = "first touch", "neighbour", "no contact"
+FIRST_TOUCH, NEIGHBOUR, NO_CONTACT, RAMP = "first touch", "neighbour", "no contact", "speed ramp"
 
 ERROR = "error"
 
@@ -77,24 +80,20 @@ class PointSpec:
     started_from : str
         ``"first touch"`` (the approach path of :meth:`ContactProblem.solve` with no initial
         contact set), ``"neighbour"`` (the edges of the previous point of the chain) or
-        ``"no contact"`` (an empty contact set: contacts are born where the profile penetrates).
+        ``"no contact"`` (an empty contact set: contacts are born where the profile penetrates)
+        or ``"speed ramp"`` (recorded from the path of a speed ramp, see ``ramp``).
     fields : bool
         Also return pressure, displacement and gap on the check grid.
     discretization : dict or None
         Keyword arguments of :class:`~viscocontact.problem.Discretization` (default mesh if None).
     labels : dict
         The chain's labels copied into the record (``variant``, ``seed``, ``gamma``, ``load``).
-    path : tuple of float
-        ζ of intermediate equilibria to pass through, in order, before the point's own ζ (a
-        continuation in bounded steps; they are solved, not recorded). A converged one hands its
-        contact set on; one that does not converge is passed over.
-    origin : float or None
-        ζ of the converged neighbour the point is continued from (sweeps; None otherwise).
-    origin_edges : tuple of float
-        That neighbour's contact set, flattened. A point continued from it (``started_from``
-        ``"neighbour"``) that does not converge is approached again from it in smaller steps of
-        ζ (:func:`refined`), and when no step reaches it, solved from first touch
-        (:func:`branch_ended`); its message says so.
+    history : dict
+        The history that reaches the point (:func:`~viscocontact.studies.history.history`
+        params): ``{"name": "approach"}`` or a speed ramp with its tolerance.
+    ramp : str
+        The speed ramp's path state after the chain's previous point (JSON of
+        :class:`~viscocontact.studies.ramp.RampState`; empty for the chain's first point).
     """
 
     chain: int
@@ -104,9 +103,8 @@ class PointSpec:
     fields: bool = False
     discretization: Mapping[str, Any] | None = None
     labels: Mapping[str, Any] = attrs.field(factory=dict)
-    path: tuple = attrs.field(default=(), converter=_as_tuple)
-    origin: float | None = None
-    origin_edges: tuple = attrs.field(default=(), converter=_as_tuple)
+    history: Mapping[str, Any] = attrs.field(factory=lambda: {"name": "approach"})
+    ramp: str = ""
 
 
 def solve_point(scene: Mapping[str, Any], spec: PointSpec,
@@ -143,12 +141,13 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     record = _skeleton(scene, spec)
     try:
         with single_blas_thread(), deadline(time_limit):
-            result, started_from = _solve(scene, spec, initial)
+            result, started_from, path = _solve(scene, spec, initial)
     except Exception as exc:  # stored with its reason; the study goes on
         record.update(status=ERROR, converged=False, message=f"{type(exc).__name__}: {exc}")
         record["seconds"] = time.perf_counter() - t0
         return record
     record["started_from"] = started_from
+    record.update(events=json.dumps(path.events), ramp=path.state)
     out = result.to_dict()
     for key in COLUMNS:
         if key in out and key not in ("edges", "zeta"):
@@ -168,7 +167,7 @@ def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
         "started_from": spec.started_from, "variant": "", "seed": -1, "gamma": np.nan,
         "load": np.nan, "zeta": float(scene["sliding"]["zeta"]), "control": control,
         "target": float(load[control]), "status": ERROR, "converged": False, "message": "",
-        "method": "",
+        "method": "", "history": str(spec.history.get("name", "")), "events": "[]", "ramp": "",
         "n_contacts": 0, "full_contact": False, "iterations": 0, "function_evaluations": 0,
         "edges": np.zeros(0), "fields": None}
     for key, kind in COLUMNS.items():
@@ -178,118 +177,82 @@ def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
     return record
 
 
+@attrs.define
+class _Path:
+    """What a point's solve leaves for the record besides its result: the events met since the
+    chain's previous point and the speed ramp's state (JSON; empty for the approach)."""
+
+    events: list = attrs.Factory(list)
+    state: str = ""
+
+
 def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
-    """``(result, started_from)``: the point's result and where its solve started (the spec's
-    ``started_from``, or :data:`FIRST_TOUCH` for a point whose branch ended before it)."""
-    from ..problem import Discretization
+    """``(result, started_from, path)`` of one point under its history."""
+    from ..problem import ContactProblem, Discretization
+    from ..scene import Scene
+    from .history import SPEED_RAMP, history
 
     options = {}
     if spec.discretization:
         options["discretization"] = Discretization(**spec.discretization)
+    problem = ContactProblem.from_scene(Scene.from_dict(scene), **options)
+    path = _Path()
+    if spec.history.get("name") == SPEED_RAMP:
+        result = _ramped(problem, history(dict(spec.history)), spec, path)
+        return result, spec.started_from, path
     start = None if initial is None else np.asarray(initial, dtype=float).reshape(-1)
-    origin, origin_start = spec.origin, (np.asarray(spec.origin_edges, dtype=float)
-                                         if spec.origin_edges else None)
-    for zeta in spec.path:      # intermediate equilibria of a bounded continuation
-        result = _solve_at(scene, zeta, start, options)
+    result = _solve_at(problem, None, start, fields=spec.fields)
+    if result.converged or spec.started_from != NEIGHBOUR:
+        return result, spec.started_from, path
+    # a warm start from the neighbour (adhesionless: the equilibrium is unique) that failed:
+    # the point's own history, the approach from first touch
+    fresh = _solve_at(problem, None, None, fields=spec.fields)
+    why = f"{fresh.message} (from first touch; from the neighbour's contact set: {result.message})"
+    counts = dict(function_evaluations=result.function_evaluations + fresh.function_evaluations,
+                  iterations=result.iterations + fresh.iterations)
+    return attrs.evolve(fresh, message=why, **counts), FIRST_TOUCH, path
+
+
+def _ramped(problem, ramp, spec: PointSpec, path: _Path):
+    """The point of a speed ramp: the chain's first point by the approach, the others recorded
+    from the ramp's path continued from the previous point's state."""
+    from .ramp import Node, Ramp, RampFailed, RampState
+
+    zeta = float(problem.zeta)
+
+    def solve(z, start):
+        return _solve_at(problem, z, start, fields=spec.fields)
+
+    if not spec.ramp:
+        result = solve(zeta, None)
         if result.converged:
-            # full contact has no edges to carry: the next step follows the approach path
-            start = None if result.full_contact else np.asarray(result.edges, float).reshape(-1)
-            origin, origin_start = float(zeta), start
-    result = _solve_at(scene, None, start, options, fields=spec.fields)
-    if (result.converged or spec.started_from != NEIGHBOUR or origin is None
-            or origin_start is None):
-        return result, spec.started_from
-    result = refined(scene, options, origin, origin_start, result, fields=spec.fields)
-    if result.converged:
-        return result, spec.started_from
-    ended = branch_ended(scene, options, result, fields=spec.fields)
-    # a point that converged from first touch starts its chain afresh; one that failed keeps
-    # the spec's own start
-    return ended, FIRST_TOUCH if ended.converged else spec.started_from
+            path.state = RampState(older=None, last=Node.of(math.log10(zeta), result),
+                                   step=ramp.tolerance).to_json()
+        return result
+    state = RampState.from_json(spec.ramp)
+    direction = 1.0 if math.log10(zeta) > state.last.log_zeta else -1.0
+    march = Ramp(history=ramp, solve=solve, direction=direction)
+    try:
+        state, result = march.record(attrs.evolve(state, step=direction * abs(state.step)),
+                                     zeta)
+    except RampFailed as failed:
+        path.events = march.events
+        from ..result import SolveStatus
+
+        return attrs.evolve(failed.result, converged=False, status=SolveStatus.NOT_CONVERGED,
+                            message=str(failed), function_evaluations=march.evaluations)
+    path.events, path.state = march.events, state.to_json()
+    why = (f"{result.message} (speed ramp: {march.solves} solves since the previous point"
+           + (f", events: {', '.join(e['kind'] for e in march.events)}" if march.events else "")
+           + ")")
+    return attrs.evolve(result, message=why, function_evaluations=march.evaluations)
 
 
-def _solve_at(scene: Mapping[str, Any], zeta: float | None, start, options: dict, *,
-              fields: bool = False):
-    """The equilibrium of ``scene`` (at ``zeta`` instead of its own ζ when given) from ``start``."""
-    from ..problem import ContactProblem
-    from ..scene import Scene
-
-    at = scene if zeta is None else {**scene, "sliding": {"zeta": float(zeta)}}
-    problem = ContactProblem.from_scene(Scene.from_dict(at), **options)
-    return problem.solve(initial=start, fields=fields, prepared=_prepared(at, problem))
-
-
-#: Smallest step of :func:`refined`, as a fraction of the ζ gap in decades, and the most solves
-#: it makes.
-REFINE_SMALLEST = 1.0 / 64.0
-REFINE_SOLVES = 24
-
-
-def refined(scene: Mapping[str, Any], options: dict, origin: float, start: np.ndarray,
-            failed, *, fields: bool = False):
-    """A point that did not converge from its neighbour's contact set, approached again from the
-    neighbour (at ζ = ``origin``, contact set ``start``) in steps of log ζ: a step that
-    converges hands its contact set on and the next step doubles (up to the rest of the gap), one
-    that fails is halved, down to :data:`REFINE_SMALLEST` of the gap (at most
-    :data:`REFINE_SOLVES` solves). This is a slow change of speed over the gap instead of the
-    jump: an adhesive equilibrium depends on the history, so the message says which one the
-    point had. Returns the point's result (``failed``, with a longer message, when no step path
-    reaches it); ``function_evaluations`` and ``iterations`` count every solve.
-    """
-    target = float(scene["sliding"]["zeta"])
-    if not (origin > 0 and target > 0) or origin == target:
-        return failed
-    span = math.log(target / origin)
-    current: np.ndarray | None = start
-    result, evaluations, iterations = failed, failed.function_evaluations, failed.iterations
-    furthest = origin
-
-    def attempt(to: float) -> bool:
-        nonlocal current, result, evaluations, iterations, furthest
-        last = to >= 1.0
-        zeta = origin * math.exp(to * span)
-        result = _solve_at(scene, None if last else zeta, current, options,
-                           fields=fields and last)
-        evaluations += result.function_evaluations
-        iterations += result.iterations
-        if result.converged and not last:
-            current = (None if result.full_contact
-                       else np.asarray(result.edges, dtype=float).reshape(-1))
-            furthest = zeta
-        return bool(result.converged)
-
-    reached, solves = march(attempt, smallest=REFINE_SMALLEST, most=REFINE_SOLVES)
-    counts = dict(function_evaluations=evaluations, iterations=iterations)
-    if reached:
-        why = (f"{result.message}: reached from the neighbour at ζ = {origin:.6g} in "
-               f"{solves} steps of ζ, the direct start having failed ({failed.message})")
-        return attrs.evolve(result, message=why, **counts)
-    reach = ("no step converged" if furthest == origin
-             else f"the steps reached ζ = {furthest:.6g} and no further")
-    why = (f"{failed.message}; approached again from the neighbour at ζ = {origin:.6g} in "
-           f"steps of ζ down to {REFINE_SMALLEST:g} of the gap ({solves} solves, {reach}), it "
-           f"did not converge either ({result.message})")
-    return attrs.evolve(failed, message=why, **counts)
-
-
-def branch_ended(scene: Mapping[str, Any], options: dict, failed, *, fields: bool = False):
-    """The result of a continued point that :func:`refined` did not reach either: the branch
-    of equilibria it was continued along ends before its ζ (a fold in ζ, where the contact set
-    has to jump and no continuation leads), so the point is solved from first touch at its own
-    ζ, as the first point of a chain is, and the chain goes on from there. The message says so
-    and keeps why the continuation failed; ``function_evaluations`` and ``iterations`` count
-    every solve. A point that does not converge from first touch either stays failed
-    (``failed``, with both reasons)."""
-    fresh = _solve_at(scene, None, None, options, fields=fields)
-    counts = dict(function_evaluations=failed.function_evaluations
-                  + fresh.function_evaluations,
-                  iterations=failed.iterations + fresh.iterations)
-    if fresh.converged:
-        why = (f"{fresh.message}: from first touch at this ζ, the branch continued from the "
-               f"neighbour having ended before it ({failed.message})")
-        return attrs.evolve(fresh, message=why, **counts)
-    why = f"{failed.message}; from first touch it did not converge either ({fresh.message})"
-    return attrs.evolve(failed, message=why, **counts)
+def _solve_at(problem, zeta: float | None, start, *, fields: bool = False):
+    """The equilibrium of ``problem`` (at ``zeta`` instead of its own ζ when given) from
+    ``start`` (None: the approach from first touch)."""
+    at = problem if zeta is None else attrs.evolve(problem, zeta=float(zeta))
+    return at.solve(initial=start, fields=fields, prepared=_prepared(at))
 
 
 # kernel tables depend only on profile, rheology, kernel and ζ: a small cache keyed by exactly
@@ -300,9 +263,9 @@ _PREPARED_SIZE = 4
 _PREPARED_LOCK = threading.Lock()
 
 
-def _prepared(scene: Mapping[str, Any], problem):
-    key = json.dumps([scene.get(s) for s in ("profile", "rheology", "kernel", "poisson")]
-                     + [scene["sliding"]["zeta"]], sort_keys=True, default=str)
+def _prepared(problem):
+    key = (repr(problem.profile), repr(problem.rheology), repr(problem.kernel),
+           repr(getattr(problem, "poisson", None)), float(problem.zeta))
     with _PREPARED_LOCK:
         if key in _PREPARED:
             _PREPARED.move_to_end(key)

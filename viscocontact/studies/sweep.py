@@ -5,24 +5,19 @@ load of a list (all in load control, p̃∞, or all in penetration control, Δ̃
 adhesionless side by side, and for every profile seed (realizations, averaged by
 :mod:`~viscocontact.studies.realizations`).
 
-Along ζ each point is continued from its neighbour (``continuation=True``): the contact set of the
-previous converged point is the initial guess of the next, which is several times cheaper than
-starting from first touch. An adhesionless equilibrium is unique, so its value does not depend on
-the start. An adhesive rough contact has many equilibria at one ζ and load, and which one a
-continued point lands on depends on the history: a slow change of speed (``zeta_step``: the gap
-to the next ζ crossed through unrecorded intermediate equilibria), an approach at that speed
-(``continuation=False``) and a single jump over decades of ζ (the default) can give different
-ones (``docs/figures.md``, "Which equilibrium"). A point that does not converge from its
-neighbour's contact set is approached again from the neighbour in steps of ζ that halve on
-failure (:func:`~viscocontact.studies.point.refined`; its message says so).
-The first point of a chain, a point after a full-contact neighbour (full contact has no edges to
-carry) and every point of a sweep with ``continuation=False`` follow the approach path from first
-touch instead. A chain (one variant, load and seed) is sequential; different chains are
-independent and run in parallel (``workers``, ``scheduler`` of :func:`~viscocontact.studies.run`).
+Which equilibrium an adhesive point shows depends on how it is reached, so a sweep states its
+history (:mod:`~viscocontact.studies.history`), stored with every point: ``"approach"`` (the
+default: every point by quasi-static loading at its own speed from first touch, independent of
+the others, so its chains are single points that run in parallel) or a ``SpeedRamp`` (a slow change
+of ζ at constant load from the chain's first point, :mod:`~viscocontact.studies.ramp`; one chain
+per load and seed). Either way the recorded values do not depend on which ζ are recorded.
+Adhesionless equilibria are unique: their chains run along ζ, each point started from its
+neighbour's contact set (a warm start; a point that does not converge from it is solved from
+first touch). Different chains are independent and run in parallel (``workers``, ``scheduler``
+of :func:`~viscocontact.studies.run`).
 """
 from __future__ import annotations
 
-import math
 from typing import Any, ClassVar, Mapping, Sequence
 
 import attrs
@@ -33,40 +28,17 @@ from ..problem import Discretization
 from ..scene import Scene
 from .base import (Chain, Study, adhesion_gamma, check_scene, int_list, log_zetas, real_list,
                    scene_variant, secant_start, starting_point)
-from .point import NEIGHBOUR, PointSpec, carried_edges, has_contact
+from .history import Approach, SpeedRamp, history
+from .point import RAMP, PointSpec, has_contact
 
-__all__ = ["Sweep", "log_zetas", "zeta_path"]
+__all__ = ["Sweep", "log_zetas"]
 
 CONTROLS = ("mean_pressure", "penetration")
 ADHESIVE, ADHESIONLESS = "adhesive", "adhesionless"
 
 
-def _zeta_step(value) -> float | None:
-    if value is None:
-        return None
-    if (isinstance(value, bool) or not isinstance(value, (int, float))
-            or not 0 < float(value) <= 10):
-        raise ValidationError("sweep.zeta_step", value,
-                              "decades of ζ in (0, 10], or None for one step")
-    return float(value)
-
-
-def zeta_path(start: float, end: float, step: float | None) -> tuple[float, ...]:
-    """The intermediate ζ of a continuation from ``start`` to ``end`` (both excluded), log-spaced,
-    so that no step exceeds ``step`` decades; empty for ``step=None``, a ζ of 0 or a short gap.
-
-    >>> [round(z, 6) for z in zeta_path(1.0, 1e-2, 0.5)]
-    [0.316228, 0.1, 0.031623]
-    >>> zeta_path(1.0, 0.0, 0.25), zeta_path(1.0, 0.6, 0.25)
-    ((), ())
-    """
-    if step is None or start <= 0 or end <= 0:
-        return ()
-    decades = abs(math.log10(end) - math.log10(start))
-    n = math.ceil(decades / step - 1e-9)
-    if n <= 1:
-        return ()
-    return tuple(float(z) for z in np.logspace(math.log10(start), math.log10(end), n + 1)[1:-1])
+def _history(value):
+    return history(value)
 
 
 def _zetas(value) -> tuple:
@@ -114,14 +86,10 @@ class Sweep(Study):
     pair : bool
         With an adhesive scene, also sweep its adhesionless twin (``adhesion.kind = "none"``, same
         solver and mesh), side by side as in the thesis's figures.
-    continuation : bool
-        Continue each point from its neighbour along ζ (else every point from first touch).
-    zeta_step : float or None
-        Largest step of an adhesive continuation in decades of ζ, in ``(0, 10]``: a larger gap
-        between two ζ of the list (or to a ζ after a failed point) is crossed through
-        log-spaced intermediate equilibria that are solved but not recorded, the way a slow
-        change of speed crosses it. ``None`` (default): one step, whatever its size.
-        Adhesionless points and ζ = 0 always take one step.
+    history : str, dict or history object
+        How each point is reached (:func:`~viscocontact.studies.history.history`):
+        ``"approach"`` (default) or ``"speed-ramp"`` / ``SpeedRamp(tolerance=...)``. A speed
+        ramp needs ζ > 0 in a strictly monotonic order (the ramp's direction).
     fields : bool
         Store pressure, displacement and gap of every point.
     discretization : Discretization or dict, optional
@@ -160,12 +128,18 @@ class Sweep(Study):
         lambda self: self.scene.load.controlled, takes_self=True))
     seeds: tuple | None = attrs.field(default=None, converter=_seeds)
     pair: bool = attrs.field(default=True, converter=bool)
-    continuation: bool = attrs.field(default=True, converter=bool)
-    zeta_step: float | None = attrs.field(default=None, converter=_zeta_step)
+    history: Approach | SpeedRamp = attrs.field(factory=Approach, converter=_history)
     fields: bool = attrs.field(default=False, converter=bool)
     discretization: Discretization | None = attrs.field(default=None, converter=_discretization)
 
     def __attrs_post_init__(self):
+        if isinstance(self.history, SpeedRamp):
+            logs = np.log10(np.maximum(self.zetas, 1e-300))
+            steps = np.diff(logs)
+            if min(self.zetas) <= 0 or not (np.all(steps > 0) or np.all(steps < 0)):
+                raise ValidationError("sweep.zetas", list(self.zetas),
+                                      "ζ > 0 in a strictly increasing or decreasing order "
+                                      "(the direction of a speed ramp)")
         seen = set()
         for chain in self.chains():  # every variant, load and seed builds a valid scene
             key = tuple(chain.labels.items())
@@ -185,20 +159,30 @@ class Sweep(Study):
     def params(self) -> dict[str, Any]:
         return {"zetas": list(self.zetas), "loads": list(self.loads), "control": self.control,
                 "seeds": None if self.seeds is None else list(self.seeds), "pair": self.pair,
-                "continuation": self.continuation, "fields": self.fields,
-                **({} if self.zeta_step is None else {"zeta_step": self.zeta_step}),
+                "history": self.history.params(), "fields": self.fields,
                 "discretization": (None if self.discretization is None
                                    else attrs.asdict(self.discretization))}
 
     @classmethod
     def from_params(cls, scene, params: Mapping[str, Any]) -> "Sweep":
-        return cls(scene=scene, **params)     # files written before zeta_step: one step
+        params = dict(params)
+        # files written before histories: continuation False was the approach; a continuation
+        # from the neighbour (one jump per gap, or steps of zeta_step) reads as a speed ramp
+        continued = params.pop("continuation", None)
+        params.pop("zeta_step", None)
+        if "history" not in params and continued is not None:
+            params["history"] = "speed-ramp" if continued else "approach"
+        return cls(scene=scene, **params)
 
     def _layout(self):
         """``(variant, load, seed, zetas, (iv, il, iseed, iz0))`` of every chain, in order."""
-        groups = ([(0, self.zetas)] if self.continuation
-                  else [(iz, (z,)) for iz, z in enumerate(self.zetas)])
+        along = [(0, self.zetas)]
+        apart = [(iz, (z,)) for iz, z in enumerate(self.zetas)]
         for iv, variant in enumerate(self.variants):
+            # adhesionless points are unique: one chain of warm starts; approached adhesive
+            # points are independent
+            groups = (apart if variant == ADHESIVE and isinstance(self.history, Approach)
+                      else along)
             for il, load in enumerate(self.loads):
                 for iseed, seed in enumerate(self.seeds or (None,)):
                     for iz0, zetas in groups:
@@ -232,25 +216,21 @@ class Sweep(Study):
         if k >= len(chain.zetas):
             return None
         scene = scene_variant(chain.scene, zeta=chain.zetas[k])
-        anchor = None
-        if self.continuation:
-            anchor = next((r for r in reversed(records) if has_contact(r)), None)
         target = chain.labels["load"] if self.control == "penetration" else None
+        ramped = chain.labels["variant"] == ADHESIVE and isinstance(self.history, SpeedRamp)
+        ramp, anchor = "", None
+        if ramped:
+            ramp = next((str(r["ramp"]) for r in reversed(records) if r.get("ramp")), "")
+        elif chain.labels["variant"] == ADHESIONLESS:
+            anchor = next((r for r in reversed(records) if has_contact(r)), None)
         started_from, initial = starting_point(anchor, target)
-        path: tuple[float, ...] = ()
-        if self.continuation and initial is not None and initial.size:
-            if chain.labels["variant"] == ADHESIVE and anchor is not None:
-                path = zeta_path(float(anchor["zeta"]), chain.zetas[k], self.zeta_step)
-            predicted = secant_start(records, "zeta", path[0] if path else chain.zetas[k],
-                                     log=True)
+        if ramp:
+            started_from = RAMP
+        if anchor is not None and initial is not None and initial.size:
+            predicted = secant_start(records, "zeta", chain.zetas[k], log=True)
             initial = initial if predicted is None else predicted
-        origin: dict[str, Any] = {}
-        if anchor is not None and started_from == NEIGHBOUR:
-            carried = carried_edges(anchor)
-            if carried is not None:
-                origin = dict(origin=float(anchor["zeta"]), origin_edges=carried.tolist())
         spec = PointSpec(chain=chain.index, step=k, phase="sweep", started_from=started_from,
-                         path=path, **origin,
+                         history=self.history.params(), ramp=ramp,
                          fields=self.fields, labels=dict(chain.labels),
                          discretization=(None if self.discretization is None
                                          else attrs.asdict(self.discretization)))

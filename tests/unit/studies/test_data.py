@@ -29,7 +29,8 @@ def record(chain, step, *, variant="adhesionless", load=0.1, zeta=1.0, area=0.5,
 def sweep_file(tmp_path, adhesive):
     """An adhesive/adhesionless sweep over 2 loads and 3 ζ, area = iv + 10 il + 100 iz, with
     the last point of the last chain missing and one point not converged."""
-    sweep = Sweep(scene=adhesive, zetas=[0.1, 1.0, 10.0], loads=[0.05, 0.1])
+    sweep = Sweep(scene=adhesive, zetas=[0.1, 1.0, 10.0], loads=[0.05, 0.1],
+                  history="speed-ramp")
     path = tmp_path / "s.h5"
     storage.create(path, sweep)
     for chain, (iv, il, _, _) in zip(sweep.chains(), sweep.grid()):
@@ -100,14 +101,15 @@ def test_sweep_dataset_is_the_table_on_named_axes(sweep_file):
     assert ds.attrs["control"] == "mean_pressure" and ds.attrs["kind"] == "sweep"
 
 
-def test_sweep_without_continuation_has_the_same_grid(tmp_path, adhesionless):
+def test_approached_points_have_the_grid_of_a_ramp(tmp_path, adhesive):
+    """Under the approach every adhesive point is its own chain; the grid is the same."""
     pytest.importorskip("xarray")
-    sweep = Sweep(scene=adhesionless, zetas=[0.1, 1.0, 10.0], continuation=False)
+    sweep = Sweep(scene=adhesive, zetas=[0.1, 1.0, 10.0], history="approach", pair=False)
     path = tmp_path / "s.h5"
     storage.create(path, sweep)
     for chain in reversed(sweep.chains()):                   # finishing order does not matter
-        storage.append(path, record(chain.index, 0, zeta=chain.zetas[0],
-                                    area=10 * chain.zetas[0]))
+        storage.append(path, record(chain.index, 0, zeta=chain.zetas[0], variant="adhesive",
+                                    area=10 * chain.zetas[0], gamma=3e-5))
     ds = load_study(path).to_xarray()
     assert ds.area.values.ravel().tolist() == [1.0, 10.0, 100.0]
 
