@@ -12,8 +12,10 @@ log ζ that it chooses itself:
   ``tolerance`` decades, which locates the event in ζ to that resolution, and then accepted;
 * a step that does not converge, or lands more than ``tolerance`` away from its prediction, at
   the smallest step (a tenth of the event resolution) means the branch ends there (a fold in
-  ζ): the contact *jumps*. The stated jump rule is the approach at the speed just past the
-  fold, from first touch (the state a contact pressed on at that speed reaches).
+  ζ): the contact *jumps*. The stated jump rule is the overdamped motion of the edges from the
+  last state on the branch, at the speed just past the fold
+  (:mod:`viscocontact.methods.bem.relax`): every edge moves at a speed proportional to its
+  residual until the edges stop.
 
 The requested ζ are recorded from this path without changing it (dense output): once the path
 passes a recorded ζ, that point is solved from the two states that bracket it, with their
@@ -35,6 +37,17 @@ import numpy as np
 from .history import SpeedRamp
 
 
+@attrs.frozen
+class Closed:
+    """The start of a solve from full contact (``ContactProblem.solve(initial=CLOSED)``)."""
+
+    full_contact: bool = True
+    edges: np.ndarray = attrs.field(factory=lambda: np.zeros(0))
+
+
+CLOSED = Closed()
+
+
 @attrs.frozen(kw_only=True)
 class Node:
     """One equilibrium on the ramp's path: ``log10 ζ``, the flat edges, full contact."""
@@ -51,10 +64,9 @@ class Node:
     def n_contacts(self) -> int:
         return -1 if self.full else len(self.edges) // 2
 
-    def start(self) -> np.ndarray | None:
-        """The contact set a solve starts from (None: full contact, which the approach reaches
-        again from first touch)."""
-        return None if self.full else np.asarray(self.edges, dtype=float)
+    def start(self):
+        """The contact set a solve starts from (full contact: a closed contact to open)."""
+        return CLOSED if self.full else np.asarray(self.edges, dtype=float)
 
     @classmethod
     def of(cls, log_zeta: float, result) -> "Node":
@@ -104,11 +116,11 @@ def set_change(before: Node, after: Node) -> str | None:
     return "birth" if after.n_contacts > before.n_contacts else "loss"
 
 
-def predicted(older: Node | None, last: Node, log_zeta: float) -> np.ndarray | None:
+def predicted(older: Node | None, last: Node, log_zeta: float):
     """The secant prediction of the edges at ``log_zeta`` (the last edges when the last two
-    nodes differ in contact set); None from full contact."""
+    nodes differ in contact set; :data:`CLOSED` from full contact)."""
     if last.full:
-        return None
+        return CLOSED
     x1 = np.asarray(last.edges, dtype=float)
     if older is None or set_change(older, last) is not None or older.log_zeta == last.log_zeta:
         return x1
@@ -117,11 +129,11 @@ def predicted(older: Node | None, last: Node, log_zeta: float) -> np.ndarray | N
     return x1 + t * (x1 - x0)
 
 
-def prediction_error(guess: np.ndarray | None, node: Node) -> float:
+def prediction_error(guess, node: Node) -> float:
     """The largest edge move from ``guess`` to ``node``, in units of its contact's half-width
     or of the mean half-width when that is larger (a narrow contact's edges are held to the
     contact area's resolution, not to their own width)."""
-    if guess is None or node.full or len(node.edges) != len(guess):
+    if isinstance(guess, Closed) or node.full or len(node.edges) != len(guess):
         return 0.0
     x = np.asarray(node.edges, dtype=float)
     half = 0.5 * (x[1::2] - x[0::2])
@@ -157,7 +169,7 @@ class Ramp:
         while True:
             target = last.log_zeta + self.direction * h
             guess = predicted(state.older, last, target)
-            result = self._solve(10.0 ** target, guess if guess is not None else None)
+            result = self._solve(10.0 ** target, guess)
             node = Node.of(target, result) if result.converged else None
             error = prediction_error(guess, node) if node is not None else math.inf
             change = None if node is None else set_change(last, node)
@@ -176,11 +188,16 @@ class Ramp:
                     else h * max(0.25, 0.9 * math.sqrt(ramp.tolerance / error)))
 
     def jump(self, last: Node, target: float, failed) -> tuple[RampState, Any]:
-        """The branch ends between ``last`` and ``target``: the approach at ``target``."""
-        result = self._solve(10.0 ** target, None)
+        """The branch ends between ``last`` and ``target``: the edges' overdamped motion from
+        ``last`` at ``target`` (from full contact: its opening)."""
+        from ..methods.bem.relax import RelaxFrom
+
+        start = (last.start() if last.full
+                 else RelaxFrom(np.asarray(last.edges), tolerance=self.history.tolerance))
+        result = self._solve(10.0 ** target, start)
         if not result.converged:
             raise RampFailed(f"the speed ramp's branch ends at ζ = {last.zeta:.6g} and the "
-                             f"approach at ζ = {10.0 ** target:.6g} did not converge "
+                             f"contact's jump at ζ = {10.0 ** target:.6g} did not converge "
                              f"({result.message}; the last step: {failed.message})", result)
         node = Node.of(target, result)
         self.events.append(event("jump", 10.0 ** target, last, node,

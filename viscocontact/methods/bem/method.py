@@ -25,6 +25,7 @@ from .closed import ClosedContact
 from .equilibrium import Equilibrium
 from .meshing import MeshPolicy, mesh_spec
 from .path import Path
+from .relax import RelaxFrom, Relaxation
 from .sets import Control
 from .state import Outcome, SolveLog, State
 from .system import residual_scale
@@ -89,6 +90,9 @@ class Solve:
             # with slivers of gap at the solver's tolerance)
             self.log.event("the closed contact carries the load without tension")
             out = State.full_contact()
+        elif isinstance(initial, RelaxFrom):
+            out = Relaxation(self.equilibrium, self.closed, initial.tolerance).run(
+                initial.edges, target)
         elif initial is not None and getattr(initial, "full_contact", False):
             out = self.path.from_full_contact(target)
         elif initial is not None:

@@ -1,0 +1,136 @@
+"""Sampling independence of adhesive sweeps under each history.
+
+Every scene is swept over the same ζ range recorded at 1, 3 and 8 points per decade, under each
+history, and the curves are compared at the common ζ (the whole decades): Ã within 1e-3 of
+max(Ã, 0.1) and μ within 1e-2 of max(|μ|, 0.01). Prints one table row per scene, load and
+history and writes ``benchmarks/results/histories.json``.
+
+Usage::
+
+    python benchmarks/histories.py [--scenes sinusoid,thesis_wavy,thesis_rough] [--seeds 0:5]
+        [--loads 0.1,0.3,0.6] [--zetas 1e-4:1e2] [--per 1,3,8]
+        [--histories approach,speed-ramp] [--workers 2] [--elements N]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+import tempfile
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+SCENES = HERE.parent / "examples" / "scenes"
+AREA_TOL, FRICTION_TOL = 1e-3, 1e-2
+
+
+def sweep(scene, zetas, load, history, workers, elements, folder):
+    import viscocontact as vc
+    from viscocontact.problem import Discretization
+
+    options = {} if elements is None else {"discretization": Discretization(elements=elements)}
+    study = vc.Sweep(scene=scene, zetas=zetas, loads=[load], pair=False, history=history,
+                     **options)
+    t0 = time.perf_counter()
+    data = vc.run_study(study, folder / "s.h5", overwrite=True, workers=workers, progress=None)
+    p = data.points
+    order = np.argsort(p["zeta"])
+    return {"zeta": p["zeta"][order], "area": p["area"][order],
+            "friction": p["friction"][order], "converged": p["converged"][order],
+            "evaluations": int(p["function_evaluations"].sum()),
+            "seconds": time.perf_counter() - t0}
+
+
+def compare(curves: dict[int, dict]) -> dict:
+    """Largest scaled differences at the common ζ against the finest recording."""
+    finest = curves[max(curves)]
+    worst_area = worst_friction = 0.0
+    for per, curve in curves.items():
+        for z, a, m in zip(curve["zeta"], curve["area"], curve["friction"]):
+            i = int(np.argmin(np.abs(np.log(finest["zeta"] / z))))
+            if abs(math.log(finest["zeta"][i] / z)) > 1e-9:
+                continue
+            worst_area = max(worst_area, abs(a - finest["area"][i]) / max(abs(a), 0.1))
+            worst_friction = max(worst_friction,
+                                 abs(m - finest["friction"][i]) / max(abs(m), 0.01))
+    return {"area": worst_area, "friction": worst_friction}
+
+
+def main(argv=None) -> int:
+    import viscocontact as vc
+    from viscocontact.studies.base import parse_numbers, parse_seeds
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--scenes", default="sinusoid,thesis_wavy,thesis_rough")
+    parser.add_argument("--seeds", default="0:5", help="seeds of the rough scene")
+    parser.add_argument("--loads", default="0.1,0.3,0.6")
+    parser.add_argument("--zetas", default="1e-4:1e2", help="START:STOP in whole decades")
+    parser.add_argument("--per", default="1,3,8", help="points per decade")
+    parser.add_argument("--histories", default="approach,speed-ramp")
+    parser.add_argument("--workers", type=int, default=1)
+    parser.add_argument("--elements", type=int, default=None)
+    parser.add_argument("--out", default=str(HERE / "results" / "histories.json"))
+    args = parser.parse_args(argv)
+
+    start, stop = (math.log10(float(v)) for v in args.zetas.split(":"))
+    decades = int(round(stop - start))
+    pers = [int(v) for v in args.per.split(",")]
+    rows = []
+    print(f"{'scene':>14} {'load':>5} {'history':>10} {'ΔÃ':>9} {'Δμ':>9} {'failed':>6} "
+          f"{'evaluations per recording':>28} {'s':>7}")
+    for name in args.scenes.split(","):
+        base = vc.Scene.from_toml(SCENES / f"{name}.toml")
+        seeds = parse_seeds(args.seeds) if name == "thesis_rough" else [None]
+        for seed in seeds:
+            scene = base if seed is None else _seeded(base, seed)
+            label = name if seed is None else f"{name}#{seed}"
+            for load in parse_numbers("--loads", args.loads):
+                for history in args.histories.split(","):
+                    curves = {}
+                    with tempfile.TemporaryDirectory() as folder:
+                        for per in pers:
+                            zetas = np.logspace(start, stop, decades * per + 1)
+                            curves[per] = sweep(scene, zetas, load, history, args.workers,
+                                                args.elements, Path(folder))
+                    worst = compare(curves)
+                    failed = sum(int((~c["converged"]).sum()) for c in curves.values())
+                    row = {"scene": label, "load": load, "history": history, **worst,
+                           "failed": failed,
+                           "evaluations": {str(p): c["evaluations"] for p, c in curves.items()},
+                           "seconds": {str(p): c["seconds"] for p, c in curves.items()},
+                           "passes": (worst["area"] <= AREA_TOL
+                                      and worst["friction"] <= FRICTION_TOL and failed == 0)}
+                    rows.append(row)
+                    print(f"{label:>14} {load:>5g} {history:>10} {worst['area']:>9.2e} "
+                          f"{worst['friction']:>9.2e} {failed:>6d} "
+                          f"{'/'.join(str(c['evaluations']) for c in curves.values()):>28} "
+                          f"{sum(c['seconds'] for c in curves.values()):>7.1f}", flush=True)
+    out = Path(args.out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    record = {"benchmark": "histories", "date": datetime.now(timezone.utc).isoformat(),
+              "version": vc.__version__ if hasattr(vc, "__version__") else "",
+              "args": vars(args), "rows": rows}
+    tmp = out.with_suffix(".tmp")
+    tmp.write_text(json.dumps(record, indent=1))
+    tmp.replace(out)
+    passed = sum(r["passes"] for r in rows)
+    print(f"{passed} of {len(rows)} curves agree at 1e-3 in Ã and 1e-2 in μ with no failed "
+          f"point; wrote {out}")
+    return 0 if passed == len(rows) else 1
+
+
+def _seeded(scene, seed):
+    from viscocontact.scene import Scene
+
+    data = scene.to_dict()
+    data["profile"] = {**data["profile"], "seed": int(seed)}
+    return Scene.from_dict(data)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

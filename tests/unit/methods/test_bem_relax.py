@@ -1,0 +1,62 @@
+"""The jump rule: the edges' overdamped motion lands where Johnson's wavy contact says, on the
+side of the unstable root it starts from, and the landing does not depend on the integration
+tolerance."""
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+import viscocontact as vc
+from viscocontact.methods.bem.relax import RelaxFrom, Relaxation
+from viscocontact.problem import ContactProblem
+from viscocontact.reference.johnson import JohnsonWavy
+
+GAMMA, AMPLITUDE, LOAD = 0.02, 0.05, 0.3
+JOHNSON = JohnsonWavy(Gamma=GAMMA, modulus_ratio=1.0)
+#: Johnson's roots of p̃∞(Ã) = LOAD: the stable one (rising load) and the unstable one (falling)
+STABLE = brentq(lambda a: JOHNSON.mean_pressure(a) - LOAD, 0.72, 4.79)
+UNSTABLE = brentq(lambda a: JOHNSON.mean_pressure(a) - LOAD, 4.8, 6.2)
+
+
+def problem(**control):
+    return ContactProblem(profile=vc.Sinusoid(amplitude=AMPLITUDE), rheology=vc.Elastic(),
+                          adhesion=vc.EnergyBalance(gamma=GAMMA * AMPLITUDE**2),
+                          solver=vc.Newton(), zeta=1.0, **(control or {"mean_pressure": LOAD}))
+
+
+@pytest.mark.parametrize("start", [0.1, 0.97 * UNSTABLE])
+def test_below_the_unstable_root_the_edges_settle_on_the_stable_one(start):
+    """From a narrow contact (it grows) and from just inside the unstable root (it shrinks) the
+    motion ends on the stable root, at both tolerances; the area is Johnson's to the mesh's
+    error (about 1e-4 of the area at the default mesh) and the two tolerances agree to the
+    solver's tolerance."""
+    areas = []
+    for tol in (0.02, 0.002):
+        result = problem().solve(initial=RelaxFrom([-start / 2, start / 2], tolerance=tol))
+        assert result.converged and result.n_contacts == 1
+        assert any("overdamped motion" in e for e in result.extras["events"])
+        areas.append(result.area)
+    assert areas[0] == pytest.approx(STABLE, rel=3e-4)
+    assert areas[1] == pytest.approx(areas[0], rel=1e-7)
+
+
+def test_outside_the_unstable_root_the_edges_run_away_from_the_stable_one():
+    """Just outside the unstable root the contact grows instead, away from the stable root,
+    at both tolerances to the same state."""
+    wide = [problem().solve(initial=RelaxFrom([-0.515 * UNSTABLE, 0.515 * UNSTABLE],
+                                              tolerance=tol)) for tol in (0.02, 0.002)]
+    for result in wide:
+        assert result.full_contact or result.area > UNSTABLE
+    assert wide[0].full_contact == wide[1].full_contact
+    assert wide[0].area == pytest.approx(wide[1].area, rel=1e-7)
+
+
+def test_a_motion_that_does_not_stop_within_its_steps_says_so():
+    from viscocontact.methods.bem.method import Solve
+
+    p = problem()
+    solve = Solve(p, p.prepare())
+    relax = Relaxation(solve.equilibrium, solve.closed, tolerance=0.02, max_steps=2)
+    from viscocontact.methods.bem.sets import Control
+
+    out = relax.run(np.array([-0.05, 0.05]), Control.load_of(LOAD))
+    assert not out.converged and "did not stop within 2 steps" in out.message
