@@ -98,12 +98,12 @@ class Relaxation:
                 h = 0.05 * float(np.min(_scale(x) / np.maximum(np.abs(r), 1e-300)))
             whole = self._step(r, J, h)
             first = self._step(r, J, 0.5 * h)
-            middle = x + first
-            rj_mid = self._linearised(system, middle)
-            if whole is None or first is None or rj_mid is None:
+            middle = None if first is None else x + first
+            rj_mid = None if middle is None else self._linearised(system, middle)
+            if whole is None or first is None or middle is None or rj_mid is None:
                 h *= 0.25
                 continue
-            second = self._step(*rj_mid, 0.5 * h)
+            second = self._step(rj_mid[0], rj_mid[1], 0.5 * h)
             if second is None:
                 h *= 0.25
                 continue
