@@ -137,6 +137,6 @@ class SelfAffineSurface(SpectralSurface):
         if self.rms is not None:
             norm = self.rms / math.sqrt(float(np.sum(w * w)) / 2.0)
         else:
-            norm = float(self.rms_slope) / math.sqrt(float(np.sum((qx * qx + qy * qy) * w * w))
-                                                     / 2.0)
+            assert self.rms_slope is not None                  # one of the two (validated)
+            norm = self.rms_slope / math.sqrt(float(np.sum((qx * qx + qy * qy) * w * w)) / 2.0)
         return SurfaceModes(kx=k[band], ky=l[band], amplitudes=norm * w, phases=phases[band])
