@@ -104,7 +104,6 @@ def check_surface(surface: Any, *, registered: bool = True, rtol: float = 1e-9) 
 
 def _check_round_trip(surface: Any, name: str, registered: bool) -> None:
     from .._toml import dumps
-    from ..scene import _init_fields, _plain
 
     if registered:
         from ..areal.surfaces.tables import build_surface, surface_table
@@ -120,9 +119,9 @@ def _check_round_trip(surface: Any, name: str, registered: bool) -> None:
         except Exception as exc:
             _fail(name, f"rebuilding from the scene table {parsed!r} failed: {exc}")
     else:
-        params = {k: _plain(getattr(surface, f.name))
-                  for k, f in _init_fields(type(surface)).items()
-                  if getattr(surface, f.name) is not None}
+        from ..areal.surfaces.tables import surface_parameters
+
+        params = surface_parameters(surface)
         parsed = tomllib.loads(dumps({"surface": params}))["surface"]
         try:
             rebuilt = type(surface)(**parsed)

@@ -4,6 +4,7 @@ from __future__ import annotations
 import attrs
 import numpy as np
 import pytest
+from hypothesis import given, settings
 
 from viscocontact.areal.surfaces import (ExtrudedProfile, MeasuredSurface, SelfAffineSurface,
                                          SinusoidSurface, SphericalCapLattice, Surface)
@@ -11,6 +12,7 @@ from viscocontact.areal.surfaces.tables import build_surface, surface_table
 from viscocontact.errors import ValidationError
 from viscocontact.profiles import SelfAffineProfile
 from viscocontact.testing.conformance_surfaces import check_surface
+from viscocontact.testing.strategies_surfaces import surfaces
 
 from .conftest import declared_surfaces
 
@@ -105,3 +107,9 @@ class MutableSurface(Surface):
 def test_broken_surfaces_fail(surface, message):
     with pytest.raises(AssertionError, match=message):
         check_surface(surface, registered=False)
+
+
+@settings(max_examples=20, deadline=None, derandomize=True)
+@given(surfaces())
+def test_generated_surfaces_conform(surface):
+    check_surface(surface, registered=False)

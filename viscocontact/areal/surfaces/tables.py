@@ -14,7 +14,7 @@ from ... import _registry
 from ...errors import ValidationError
 from .base import Surface
 
-__all__ = ["build_surface", "surface_table"]
+__all__ = ["build_surface", "surface_parameters", "surface_table"]
 
 SECTION = "surface"
 
@@ -44,15 +44,20 @@ def build_surface(table: Mapping[str, Any]) -> Surface:
 
 def surface_table(surface: Surface) -> dict[str, Any]:
     """``{"kind": registered name, **parameters}`` of a surface (None parameters left out)."""
+    kind = _registry.REGISTRIES["surfaces"].name_of(surface)  # PluginError if not registered
+    return {"kind": kind, **surface_parameters(surface)}
+
+
+def surface_parameters(surface: Surface) -> dict[str, Any]:
+    """The constructor's parameters as plain data: arrays as lists, a nested profile as its own
+    table with its ``kind``, None parameters left out (TOML has no null)."""
     from ...profiles.base import Profile
     from ...scene import _init_fields, _plain, dump_component
 
-    registry = _registry.REGISTRIES["surfaces"]
-    kind = registry.name_of(surface)  # PluginError when the class is not registered
-    out: dict[str, Any] = {"kind": kind}
+    out: dict[str, Any] = {}
     for key, f in _init_fields(type(surface)).items():
         value = getattr(surface, f.name)
-        if value is None and f.default is None:
+        if value is None:
             continue
         out[key] = dump_component("profile", value) if isinstance(value, Profile) else _plain(value)
     return out
