@@ -155,7 +155,8 @@ class ArealSpectrum:
         """The continuous isotropic ``C̃(q̃) ∝ max(q̃, k_r)^{-2(1+H)}`` on ``[lowest, scales]``,
         normalised to ``m0 = rms²``, as a quadrature: ``nodes`` Gauss-Legendre points in
         ``log q̃`` on each side of the roll-off times ``angles`` equally spaced directions
-        (exact to rounding for the power-law moments; spectrally accurate in the angle)."""
+        (the power-law moments to rounding: e^{s·log q} is entire; trigonometric moments of the
+        angle up to order ``angles - 1`` exactly)."""
         hurst = _args.real("hurst", hurst, 0.0, 1.0, lo_open=True)
         scales = _args.real("scales", scales, 1.0, lo_open=True)
         lowest = _args.real("lowest", lowest, 1.0, scales, hi_open=True)

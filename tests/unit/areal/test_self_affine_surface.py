@@ -120,6 +120,8 @@ def test_rectangular_cell_wavevectors():
     (dict(rms=0.01, orientation=math.pi), "orientation"),
     (dict(rms=0.01, anisotropy=0.0), "anisotropy"),
     (dict(rms=0.01, lowest=9.0), "lowest"),
+    # γ = 3 along x, a thin cell: (1, 0) has q̃_e = 3, (0, 1) has 5; nothing in [1, 2]
+    (dict(rms=0.01, scales=2, anisotropy=3.0, aspect=0.2), "scales"),
     (dict(rms=0.01, seed=-1), "seed"),
 ])
 def test_bad_input_names_the_field(kwargs, field):
@@ -132,3 +134,19 @@ def test_bad_grid_is_refused():
     s = SelfAffineSurface(hurst=0.8, scales=8, rms=0.01)
     with pytest.raises(ValidationError, match="nx"):
         s.heights(1, 8)
+
+
+def test_gradient_is_the_derivative_of_the_series():
+    s = SelfAffineSurface(hurst=0.7, scales=8, rms=0.02, seed=4, aspect=1.5, anisotropy=1.5)
+    x, y = s.grid(20, 30)
+    m = s.modes
+    arg = [k * x + l * y / s.aspect + p for k, l, p in zip(m.kx, m.ky, m.phases)]
+    hx = -sum(a * k * np.sin(t) for k, a, t in zip(m.kx, m.amplitudes, arg))
+    hy = -sum(a * l / s.aspect * np.sin(t) for l, a, t in zip(m.ky, m.amplitudes, arg))
+    gx, gy = s.gradient(20, 30)
+    scale = float(np.max(np.abs(hx)))
+    assert np.max(np.abs(gx - hx)) < 1e-13 * scale and np.max(np.abs(gy - hy)) < 1e-13 * scale
+    st = s.statistics()
+    fine_x, fine_y = s.gradient(64, 64)
+    assert float(np.mean(fine_x**2)) == pytest.approx(st.m2x, rel=1e-12)
+    assert float(np.mean(fine_y**2)) == pytest.approx(st.m2y, rel=1e-12)

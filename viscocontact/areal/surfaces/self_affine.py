@@ -108,7 +108,8 @@ class SelfAffineSurface(SpectralSurface):
     anisotropy: float = attrs.field(default=1.0, converter=as_float, validator=positive)
     orientation: float = attrs.field(default=0.0, converter=as_float,
                                      validator=in_range(0.0, math.pi, hi_open=True))
-    aspect: float = attrs.field(default=1.0, converter=as_float, validator=positive)
+    aspect: float = attrs.field(default=1.0, converter=as_float,
+                                validator=[positive, lambda inst, a, v: inst._lattice()])
 
     def effective_wavenumbers(self, qx: np.ndarray, qy: np.ndarray) -> np.ndarray:
         """``q̃_e = √((γ q̃·e1)² + (q̃·e2)²)`` of wavevectors ``(q̃x, q̃y)`` (units of q0)."""
@@ -117,20 +118,27 @@ class SelfAffineSurface(SpectralSurface):
         across = -qx * s + qy * c
         return np.hypot(self.anisotropy * along, across)
 
-    @functools.cached_property
-    def modes(self) -> SurfaceModes:
-        """The modes of the band with their amplitudes and seeded phases (computed once)."""
+    def _lattice(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """``(k, l, q̃_e, band)`` over the box of the half plane that holds the band; refuses a
+        band without a mode of the cell."""
         reach = self.scales / min(1.0, self.anisotropy)
         kmax, lmax = int(math.floor(reach)), int(math.floor(reach * self.aspect))
         l, k = np.meshgrid(np.arange(lmax + 1), np.arange(-kmax, kmax + 1), indexing="ij")
-        phases = np.random.default_rng(self.seed).uniform(0.0, 2.0 * np.pi, k.shape)
         qe = self.effective_wavenumbers(k.astype(float), l / self.aspect)
         band = (qe >= self.lowest * (1.0 - 1e-12)) & (qe <= self.scales * (1.0 + 1e-12))
         band &= (l > 0) | (k > 0)
         if not np.any(band):
             raise ValidationError("SelfAffineSurface.scales", self.scales,
-                                  f"a band that holds a mode of the cell (aspect {self.aspect:g},"
-                                  f" anisotropy {self.anisotropy:g})")
+                                  f"a band [{self.lowest:g}, scales] that holds a mode of the "
+                                  f"cell (aspect {self.aspect:g}, anisotropy {self.anisotropy:g}"
+                                  f", orientation {self.orientation:g})")
+        return k, l, qe, band
+
+    @functools.cached_property
+    def modes(self) -> SurfaceModes:
+        """The modes of the band with their amplitudes and seeded phases (computed once)."""
+        k, l, qe, band = self._lattice()
+        phases = np.random.default_rng(self.seed).uniform(0.0, 2.0 * np.pi, k.shape)
         kr = 1.0 if self.rolloff is None else self.rolloff
         w = np.maximum(qe[band], kr) ** -(1.0 + self.hurst)
         qx, qy = k[band].astype(float), l[band] / self.aspect

@@ -147,7 +147,20 @@ class SpectralSurface(Surface):
         """
         nx, ny = check_grid(nx, ny)
         m = self.modes
+        return self._synthesis(nx, ny, 0.5 * m.amplitudes * np.exp(1j * m.phases))
+
+    def gradient(self, nx: int, ny: int) -> tuple[np.ndarray, np.ndarray]:
+        """``(∂h/∂x, ∂h/∂y)`` (dimensionless slopes) on the grid of :meth:`heights`, exact: the
+        derivatives of the Fourier series, sampled."""
+        nx, ny = check_grid(nx, ny)
+        m = self.modes
         c = 0.5 * m.amplitudes * np.exp(1j * m.phases)
+        qx, qy = m.wavevectors(self.aspect)
+        return (self._synthesis(nx, ny, 1j * qx * c), self._synthesis(nx, ny, 1j * qy * c))
+
+    def _synthesis(self, nx: int, ny: int, c: np.ndarray) -> np.ndarray:
+        """``Σ c e^{i(k x̃ + l ỹ/aspect)} + conj`` over the modes, sampled on the grid."""
+        m = self.modes
         # the columns 0..nx/2 of the full Hermitian spectrum: each mode and its conjugate where
         # their aliased x index falls (both in the self-conjugate columns 0 and nx/2)
         spec = np.zeros((ny, nx // 2 + 1), dtype=complex)
