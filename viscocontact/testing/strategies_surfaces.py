@@ -36,8 +36,8 @@ def sinusoid_surfaces() -> st.SearchStrategy:
 def self_affine_surfaces(max_scales: int = 12) -> st.SearchStrategy:
     """:class:`SelfAffineSurface` with H in [0.2, 1], up to ``max_scales`` scales, any seed,
     anisotropy in [1/2, 2] at any orientation."""
-    return st.builds(SelfAffineSurface, hurst=st.floats(0.2, 1.0), scales=st.integers(1, max_scales),
-                     rms=st.floats(1e-3, 0.1), seed=st.integers(0, 2**32 - 1),
+    return st.builds(SelfAffineSurface, hurst=st.floats(0.2, 1.0),
+                     scales=st.integers(1, max_scales), rms=st.floats(1e-3, 0.1), seed=st.integers(0, 2**32 - 1),
                      anisotropy=st.floats(0.5, 2.0),
                      orientation=st.floats(0.0, math.pi, exclude_max=True), aspect=_aspects)
 

@@ -182,7 +182,7 @@ def test_isotropic_power_law_quadrature_is_exact_for_the_moments(rolloff):
     kr = 1.0 if rolloff is None else rolloff
     b = 2 * (1 + h)
 
-    def integral(p):                               # ∫ q^p C̃(q) 2πq dq on [1, N], C̃ ∝ max(q, kr)^-b
+    def integral(p):                     # ∫ q^p C̃(q) 2πq dq on [1, N], C̃ ∝ max(q, kr)^-b
         flat = kr**-b * (kr ** (p + 2) - 1.0) / (p + 2)
         return flat + (n ** (p + 2 - b) - kr ** (p + 2 - b)) / (p + 2 - b)
 

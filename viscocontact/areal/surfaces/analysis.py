@@ -108,8 +108,9 @@ def _samples(surface_or_heights, nx, ny, aspect) -> tuple[np.ndarray, float]:
         if aspect is not None:
             raise ValidationError("aspect", aspect, "None when a Surface is given (its own)")
         if nx is None or ny is None:
-            grid = getattr(surface, "nyquist_grid", (256, 256))
-            nx, ny = (1 << max(6, math.ceil(math.log2(2 * n))) for n in grid)
+            grid = getattr(surface, "nyquist_grid", None)
+            nx, ny = ((256, 256) if grid is None
+                      else (1 << max(6, math.ceil(math.log2(2 * n))) for n in grid))
         return np.asarray(surface.heights(nx, ny), dtype=float), float(surface.aspect)
     h = np.array(surface_or_heights, dtype=float)
     if nx is not None or ny is not None:

@@ -10,9 +10,8 @@ from ..._validation import positive
 from ...errors import ValidationError
 from ...profiles.base import Profile
 from ...profiles.spectral import as_float
-from .spectral import check_grid
-
 from .base import Surface
+from .spectral import check_grid
 
 __all__ = ["ExtrudedProfile"]
 

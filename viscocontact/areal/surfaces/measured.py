@@ -136,7 +136,8 @@ class MeasuredSurface(SpectralSurface):
         Parameters
         ----------
         heights : array_like, shape (ny, nx)
-            Heights in units of ``unit`` metres; row j at ``y_j = j·Δy``, column i at ``x_i = i·Δx``.
+            Heights in units of ``unit`` metres; row j at ``y_j = j·Δy``, column i at
+            ``x_i = i·Δx``.
         pixel_size : float or (float, float)
             ``Δx`` (and ``Δy``, default ``Δx``) in metres.
         unit : float

@@ -1,4 +1,7 @@
-"""The 2D sinusoid ``q0·h = Λ̃ cos(k x̃) cos(l ỹ/aspect)`` (Johnson, Greenwood and Higginson 1985)."""
+"""The 2D sinusoid ``q0·h = Λ̃ cos(k x̃) cos(l ỹ/aspect)``.
+
+Johnson, Greenwood and Higginson's (1985) wavy surface for ``k = l = 1``.
+"""
 from __future__ import annotations
 
 import attrs
@@ -58,7 +61,8 @@ class SinusoidSurface(SpectralSurface):
 
     @property
     def modes(self) -> SurfaceModes:
-        """``(k, l)`` and ``(-k, l)`` with ``a = Λ̃/2`` each (one mode ``a = Λ̃`` if k or l is 0)."""
+        """``(k, l)`` and ``(-k, l)`` with ``a = Λ̃/2`` each (one mode, ``a = Λ̃``, if k or l
+        is 0)."""
         if self.kx == 0 or self.ky == 0:
             return SurfaceModes(kx=[self.kx], ky=[self.ky], amplitudes=[self.amplitude],
                                 phases=[0.0])
