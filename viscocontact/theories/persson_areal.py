@@ -26,8 +26,8 @@ pressure variance with the roughness resolved up to ``|q̃| <= ζ_P`` (Persson's
 
 Persson's ``erf(1/(2√G))`` with ``G = (1/8)∫d²q q²C(q)|E(q·V)/((1-ν²)σ0)|²``. Elastic
 (``E = E0``, which slow sliding tends to): ``A/A0 = erf(√2 p/ḡ)``, proportional to the load at
-small load, ``A/A0 ≈ κ p̄/(E*ḡ)`` with ``κ = √(8/π) ≈ 1.596``. A 1D profile extruded along y has the same
-formula with ``ḡ² = m2`` (:class:`~viscocontact.theories.PerssonContact`). Fast sliding
+small load, ``A/A0 ≈ κ p̄/(E*ḡ)`` with ``κ = √(8/π) ≈ 1.596``. A 1D profile extruded along y
+has the same formula with ``ḡ² = m2`` (:class:`~viscocontact.theories.PerssonContact`). Fast sliding
 (``ζ → ∞``) stiffens every mode to E∞ except those with ``q̃_V = 0`` (ridges along the sliding
 direction, not deformed in time), which keep E0.
 
