@@ -150,3 +150,31 @@ def test_gradient_is_the_derivative_of_the_series():
     fine_x, fine_y = s.gradient(64, 64)
     assert float(np.mean(fine_x**2)) == pytest.approx(st.m2x, rel=1e-12)
     assert float(np.mean(fine_y**2)) == pytest.approx(st.m2y, rel=1e-12)
+
+
+def test_an_empty_band_is_refused_exactly_when_the_lattice_has_no_mode_in_it():
+    import itertools
+
+    refused = 0
+    for scales, lowest, gamma, theta, aspect in itertools.product(
+            [1, 2, 3, 5], [1.0, 2.0, 2.9, 3.0, 5.0], [0.3, 1.0, 3.0], [0.0, math.pi / 2, 2.5],
+            [0.2, 1.0, 2.3]):
+        if lowest > scales:
+            continue
+        c, s = math.cos(theta), math.sin(theta)
+        reach = scales / min(1.0, gamma)
+        kmax, lmax = int(reach) + 1, int(reach * aspect) + 1
+        # brute force over the box: the effective wavenumber of every mode of the half plane
+        found = any(lowest * (1 - 1e-12)
+                    <= math.hypot(gamma * (k * c + l / aspect * s), -k * s + l / aspect * c)
+                    <= scales * (1 + 1e-12)
+                    for l in range(lmax + 1) for k in range(-kmax, kmax + 1) if l > 0 or k > 0)
+        kw = dict(hurst=0.8, scales=scales, lowest=lowest, anisotropy=gamma, orientation=theta,
+                  aspect=aspect, rms=0.01)
+        if found:
+            assert SelfAffineSurface(**kw).modes.kx.size > 0
+        else:
+            refused += 1
+            with pytest.raises(ValidationError, match="SelfAffineSurface.scales"):
+                SelfAffineSurface(**kw)
+    assert refused > 10                               # the check is exercised both ways

@@ -109,7 +109,7 @@ class SelfAffineSurface(SpectralSurface):
     orientation: float = attrs.field(default=0.0, converter=as_float,
                                      validator=in_range(0.0, math.pi, hi_open=True))
     aspect: float = attrs.field(default=1.0, converter=as_float,
-                                validator=[positive, lambda inst, a, v: inst._lattice()])
+                                validator=[positive, lambda inst, a, v: inst._check_band()])
 
     def effective_wavenumbers(self, qx: np.ndarray, qy: np.ndarray) -> np.ndarray:
         """``q̃_e = √((γ q̃·e1)² + (q̃·e2)²)`` of wavevectors ``(q̃x, q̃y)`` (units of q0)."""
@@ -119,8 +119,7 @@ class SelfAffineSurface(SpectralSurface):
         return np.hypot(self.anisotropy * along, across)
 
     def _lattice(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """``(k, l, q̃_e, band)`` over the box of the half plane that holds the band; refuses a
-        band without a mode of the cell."""
+        """``(k, l, q̃_e, band)`` over the box of the half plane that holds the band."""
         reach = self.scales / min(1.0, self.anisotropy)
         kmax, lmax = int(math.floor(reach)), int(math.floor(reach * self.aspect))
         l, k = np.meshgrid(np.arange(lmax + 1), np.arange(-kmax, kmax + 1), indexing="ij")
@@ -128,11 +127,41 @@ class SelfAffineSurface(SpectralSurface):
         band = (qe >= self.lowest * (1.0 - 1e-12)) & (qe <= self.scales * (1.0 + 1e-12))
         band &= (l > 0) | (k > 0)
         if not np.any(band):
-            raise ValidationError("SelfAffineSurface.scales", self.scales,
-                                  f"a band [{self.lowest:g}, scales] that holds a mode of the "
-                                  f"cell (aspect {self.aspect:g}, anisotropy {self.anisotropy:g}"
-                                  f", orientation {self.orientation:g})")
+            self._refuse_band()
         return k, l, qe, band
+
+    def _check_band(self) -> None:
+        """Refuse a band without a mode of the cell, row by row of the lattice: on row l the
+        band is ``lo² <= A k² + B k + C <= hi²``, an interval of k minus an inner one."""
+        c, s, g2 = math.cos(self.orientation), math.sin(self.orientation), self.anisotropy**2
+        lmax = int(math.floor(self.scales / min(1.0, self.anisotropy) * self.aspect))
+        y = np.arange(lmax + 1) / self.aspect
+        a = g2 * c * c + s * s
+        b = 2.0 * y * (g2 - 1.0) * c * s
+        cc = y * y * (g2 * s * s + c * c)
+
+        def roots(radius):
+            disc = b * b - 4.0 * a * (cc - radius**2)
+            root = np.sqrt(np.maximum(disc, 0.0))
+            return disc, (-b - root) / (2.0 * a), (-b + root) / (2.0 * a)
+
+        eps = 1e-9
+        d_hi, lo_k, hi_k = roots(self.scales * (1.0 + 1e-12))
+        d_lo, in_lo, in_hi = roots(self.lowest * (1.0 - 1e-12))
+        first = np.ceil(lo_k - eps)
+        first[0] = max(first[0], 1.0)                              # l = 0: k > 0 only
+        last = np.floor(hi_k + eps)
+        hole = d_lo > 0
+        below = np.where(hole, np.minimum(last, np.floor(in_lo + eps)), last) >= first
+        above = hole & (np.maximum(first, np.ceil(in_hi - eps)) <= last)
+        if not np.any((d_hi >= 0) & (below | above)):
+            self._refuse_band()
+
+    def _refuse_band(self):
+        raise ValidationError("SelfAffineSurface.scales", self.scales,
+                              f"a band [{self.lowest:g}, scales] that holds a mode of the cell "
+                              f"(aspect {self.aspect:g}, anisotropy {self.anisotropy:g}, "
+                              f"orientation {self.orientation:g})")
 
     @functools.cached_property
     def modes(self) -> SurfaceModes:

@@ -76,8 +76,8 @@ def _check_half_plane(inst, attribute, value):
         i = int(np.flatnonzero(~half)[0])
         raise ValidationError("SurfaceModes.ky", (int(inst.kx[i]), int(value[i])),
                               "modes of the half plane l > 0, or l = 0 and k > 0")
-    key = value.astype(np.int64) * (2 * int(np.abs(inst.kx).max()) + 1) + inst.kx
-    if np.unique(key).size != key.size:
+    key = np.sort(value.astype(np.int64) * (2 * int(np.abs(inst.kx).max()) + 1) + inst.kx)
+    if np.any(key[1:] == key[:-1]):
         raise ValidationError("SurfaceModes.kx/ky", "a repeated (k, l) pair", "distinct modes")
 
 
