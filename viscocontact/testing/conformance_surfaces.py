@@ -2,10 +2,11 @@
 
 ``check_surface(surface)`` raises :class:`AssertionError` naming the property that fails: frozen
 attrs value semantics, a positive aspect, heights of shape ``(ny, nx)`` that are real, finite,
-zero-mean and reproducible on odd and even grids, point sampling (the even samples of a grid
-twice as fine are the coarse samples, up to the constant of the mean), the grid of
-:meth:`~viscocontact.areal.surfaces.base.Surface.grid`, finite statistics, and a round trip
-through the scene table (:mod:`viscocontact.areal.surfaces.tables`).
+zero-mean, reproducible on odd and even grids and returned as new writable arrays, point sampling
+(the even samples of a grid twice as fine are the coarse samples, up to the constant of the
+mean), the grid of :meth:`~viscocontact.areal.surfaces.base.Surface.grid`, finite statistics,
+pickling (studies send surfaces to worker processes), and a round trip through the scene table
+(:mod:`viscocontact.areal.surfaces.tables`).
 
 Examples
 --------
@@ -19,6 +20,7 @@ In a plugin's test suite::
 from __future__ import annotations
 
 import math
+import pickle
 import tomllib
 from typing import Any
 
@@ -77,6 +79,13 @@ def check_surface(surface: Any, *, registered: bool = True, rtol: float = 1e-9) 
                         f"against max |h| = {scale:.3g}")
         if not np.array_equal(h, surface.heights(nx, ny)):
             _fail(name, f"heights({nx}, {ny}) differ between two calls (seeded, no global state)")
+        if not h.flags.writeable:
+            _fail(name, f"heights({nx}, {ny}) must be a new writable array (callers modify it)")
+        h[...] += 1.0
+        if np.array_equal(h, surface.heights(nx, ny)):
+            _fail(name, f"heights({nx}, {ny}) returned an array the surface keeps: changing it "
+                        "changed the next call's heights (return a copy)")
+        h -= 1.0
         fine = surface.heights(2 * nx, 2 * ny)[::2, ::2]
         err = float(np.max(np.abs((fine - fine.mean()) - (h - h.mean())))) / scale
         if err > rtol:
@@ -99,6 +108,12 @@ def check_surface(surface: Any, *, registered: bool = True, rtol: float = 1e-9) 
         _fail(name, f"statistics have non-finite values {bad}")
     if stats.rms <= 0:
         _fail(name, "the surface is flat (rms height 0): a surface needs roughness")
+    try:
+        copy = pickle.loads(pickle.dumps(surface))
+    except Exception as exc:
+        _fail(name, f"cannot be pickled ({exc}): studies send surfaces to worker processes")
+    if copy != surface or not np.array_equal(copy.heights(16, 12), surface.heights(16, 12)):
+        _fail(name, "a pickled and unpickled copy differs from the surface")
     _check_round_trip(surface, name, registered)
 
 

@@ -93,6 +93,16 @@ class AveragedSurface(Surface):
         return self.amplitude * np.cos(3 * x) * np.sin(3 * h) / (3 * h)
 
 
+@attrs.frozen(kw_only=True)
+class CachedSurface(Surface):
+    """A broken surface: hands out the array it keeps."""
+
+    table: np.ndarray = attrs.field(factory=lambda: np.cos(np.arange(16.0)), eq=False)
+
+    def heights(self, nx, ny):
+        return np.broadcast_to(self.table[:nx] - self.table[:nx].mean(), (ny, nx))
+
+
 class MutableSurface(Surface):
     def heights(self, nx, ny):
         return np.zeros((ny, nx))
@@ -102,6 +112,7 @@ class MutableSurface(Surface):
     (OffsetSurface(), "zero mean"),
     (TransposedSurface(), "shape"),
     (AveragedSurface(), "point samples"),
+    (CachedSurface(), "writable"),
     (MutableSurface(), "attrs"),
 ])
 def test_broken_surfaces_fail(surface, message):
