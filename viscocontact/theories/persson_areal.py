@@ -231,6 +231,11 @@ class PerssonArealContact:
 
     spectrum: ArealSpectrum = attrs.field(validator=attrs.validators.instance_of(ArealSpectrum))
 
+    @classmethod
+    def from_surface(cls, surface) -> PerssonArealContact:
+        """The theory for a :class:`~viscocontact.areal.surfaces.Surface` (its spectrum)."""
+        return cls(spectrum=ArealSpectrum.from_surface(surface))
+
     def gradient_variance(self, magnification: float | None = None) -> float:
         """``ḡ²(ζ_P) = Σ_{|q̃| <= ζ_P} |q̃|² w`` (all modes when ``magnification`` is None)."""
         s = self.spectrum
@@ -294,6 +299,13 @@ class PerssonArealFriction:
                                    validator=in_range(0.0, 2.0 * math.pi, hi_open=True))
     contact_correction: float | None = attrs.field(
         default=None, validator=attrs.validators.optional(in_range(0.0, 1.0)))
+
+    @classmethod
+    def from_surface(cls, surface, rheology: Rheology, *, direction: float = 0.0,
+                     contact_correction: float | None = None) -> PerssonArealFriction:
+        """The theory for a :class:`~viscocontact.areal.surfaces.Surface` on ``rheology``."""
+        return cls(spectrum=ArealSpectrum.from_surface(surface), rheology=rheology,
+                   direction=direction, contact_correction=contact_correction)
 
     @property
     def sliding_wavenumbers(self) -> np.ndarray:

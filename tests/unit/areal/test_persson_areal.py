@@ -39,7 +39,7 @@ def test_spectrum_moments_are_the_surfaces():
 
 
 def test_elastic_area_is_linear_in_load_with_perssons_coefficient():
-    c = PerssonArealContact(spectrum=ArealSpectrum.from_surface(surface()))
+    c = PerssonArealContact.from_surface(surface())
     g = math.sqrt(c.spectrum.gradient_variance)
     p = 1e-6 * g
     # erf(x) = 2x/√π (1 - x²/3 + ...): relative error x²/3 ~ 1e-12 here
@@ -86,7 +86,8 @@ def test_sliding_along_ridges_has_no_friction():
 
 
 def test_friction_is_positive_and_vanishes_in_the_elastic_limits():
-    f = PerssonArealFriction(spectrum=ArealSpectrum.from_surface(surface()), rheology=SLS)
+    f = PerssonArealFriction.from_surface(surface(), SLS)
+    assert f == PerssonArealFriction(spectrum=ArealSpectrum.from_surface(surface()), rheology=SLS)
     mu = f.coefficient(ZETAS, 0.01)
     assert np.all(mu > 0)
     peak = mu.max()

@@ -81,6 +81,25 @@ class SphericalCapLattice(Surface):
         volume = math.pi * self.height**2 * (3.0 * self.radius - self.height) / 3.0
         return volume / (TWO_PI * TWO_PI * self.aspect)
 
+    @property
+    def m0(self) -> float:
+        """``<(q0 h)²>`` over the cell, exact: ``(1/A)∫z² dA - mean²`` with
+        ``∫z² dA = π[(R̃⁴ - c⁴)/2 - 4c(R̃³ - c³)/3 + c²(R̃² - c²)]``, ``c = R̃ - h̃_c``."""
+        r, c = self.radius, self.radius - self.height
+        integral = math.pi * ((r**4 - c**4) / 2.0 - 4.0 * c * (r**3 - c**3) / 3.0
+                              + c * c * (r * r - c * c))
+        return integral / (TWO_PI * TWO_PI * self.aspect) - self.mean_height**2
+
+    @property
+    def gradient_variance(self) -> float:
+        """``<|∇h|²>`` over the cell, exact: ``(π/A)[2R̃² ln(R̃/c) - b̃²]`` (infinite for a
+        hemisphere, whose rim is vertical)."""
+        r, c = self.radius, self.radius - self.height
+        if c <= 0.0:
+            return math.inf
+        return math.pi * (2.0 * r * r * math.log(r / c) - self.base_radius**2) / (
+            TWO_PI * TWO_PI * self.aspect)
+
     def heights(self, nx: int, ny: int) -> np.ndarray:
         """The caps sampled on the ``(ny, nx)`` grid, minus the samples' mean."""
         nx, ny = check_grid(nx, ny)
