@@ -1,6 +1,6 @@
 """Entry-point registry of components.
 
-One small generic class serves the six component kinds. Listing names imports nothing; looking a
+One small generic class serves the seven component kinds. Listing names imports nothing; looking a
 name up loads the entry point, checks that it is a subclass of the kind's base class, and caches it.
 An unknown name lists the registered ones with a "did you mean"; a broken plugin fails only when it
 is asked for, chained to its original ImportError. When two distributions register one name for
@@ -23,6 +23,7 @@ GROUPS = {
     "solvers": "viscocontact.solvers",
     "adhesion": "viscocontact.adhesion",
     "methods": "viscocontact.methods",
+    "surfaces": "viscocontact.surfaces",
 }
 
 
@@ -134,6 +135,7 @@ def _base(kind: str) -> Callable[[], type]:
             "solvers": ("viscocontact.solvers.base", "NonlinearSolver"),
             "adhesion": ("viscocontact.adhesion.base", "AdhesionModel"),
             "methods": ("viscocontact.methods.base", "SolutionMethod"),
+            "surfaces": ("viscocontact.areal.surfaces.base", "Surface"),
         }[kind]
         return getattr(importlib.import_module(module), attr)
 
@@ -146,6 +148,8 @@ kernels = Registry(GROUPS["kernels"], _base("kernels"))
 solvers = Registry(GROUPS["solvers"], _base("solvers"))
 adhesion = Registry(GROUPS["adhesion"], _base("adhesion"))
 methods = Registry(GROUPS["methods"], _base("methods"))
+surfaces = Registry(GROUPS["surfaces"], _base("surfaces"))
 
 REGISTRIES = {"profiles": profiles, "rheologies": rheologies, "kernels": kernels,
-              "solvers": solvers, "adhesion": adhesion, "methods": methods}
+              "solvers": solvers, "adhesion": adhesion, "methods": methods,
+              "surfaces": surfaces}

@@ -16,6 +16,10 @@ EXAMPLES = {
     ("kernels", "half-plane"): dict(),
     ("kernels", "confined-layer"): dict(thickness=0.8, poisson=0.3),
     ("kernels", "free-layer"): dict(thickness=2.0, poisson=0.5),
+    ("surfaces", "self-affine"): dict(hurst=0.8, scales=12, rms=0.01, seed=3, anisotropy=2.0),
+    ("surfaces", "extruded"): dict(profile={"kind": "sinusoid", "amplitude": 0.05}),
+    ("surfaces", "spherical-caps"): dict(radius=3.0, height=0.5),
+    ("surfaces", "sinusoid"): dict(amplitude=0.05),
 }
 
 
@@ -32,7 +36,7 @@ def _instance(group, name):
 
 def _names(group):
     return [n for n in _registry.REGISTRIES[group].names()
-            if not (group == "profiles" and n == "measured")]
+            if not (group in ("profiles", "surfaces") and n == "measured")]
 
 
 @pytest.mark.parametrize("name", _names("profiles"))
@@ -64,3 +68,19 @@ def test_methods_conform(name):
     from viscocontact.testing.conformance_methods import check_method
 
     check_method(_registry.REGISTRIES["methods"].get(name)())
+
+
+@pytest.mark.parametrize("name", _names("surfaces"))
+def test_surfaces_conform(name):
+    from viscocontact.testing.conformance_surfaces import check_surface
+
+    check_surface(_instance("surfaces", name))
+
+
+def test_measured_surface_conforms():
+    from viscocontact.areal.surfaces import MeasuredSurface, SelfAffineSurface
+    from viscocontact.testing.conformance_surfaces import check_surface
+
+    heights = SelfAffineSurface(hurst=0.7, scales=6, rms=0.01).heights(16, 12) * 1e-7
+    check_surface(MeasuredSurface.from_samples(heights, 1e-6),
+                  registered="measured" in _registry.REGISTRIES["surfaces"])

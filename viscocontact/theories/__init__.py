@@ -28,11 +28,15 @@ Rough contacts, in the package's dimensionless groups (eq. 4.17: lengths × q0, 
 :mod:`.spectrum`                      :class:`LineSpectrum` (one-sided spectrum of a profile)
 :mod:`.persson`                       :class:`PerssonContact`: area for line roughness (3.34-3.45)
 :mod:`.persson_friction`              :class:`PerssonFriction`: mean-field viscoelastic friction
+:mod:`.persson_areal`                 :class:`PerssonArealContact`, :class:`PerssonArealFriction`:
+                                      area and friction of areal surfaces (:class:`ArealSpectrum`,
+                                      pressures as ``p̄/E*``)
 ====================================  =========================================================
 
 The multi-asperity theories are intrinsically 3D (isotropic surfaces; a profile is read as the
 cross-section of one). Persson's area and friction are derived here for 1D roughness on a
-half-plane. See ``docs/theories.md`` for the formulas, the checks and the thesis's misprints.
+half-plane; :mod:`.persson_areal` holds them for areal surfaces. See ``docs/theories.md`` and
+``docs/areal.md`` for the formulas, the checks and the thesis's misprints.
 """
 from .asperity import AsperityModel, gaussian_tail_moment
 from .bgt import SimplifiedBGT
@@ -43,6 +47,7 @@ from .hertz import HertzCylinder, HertzSphere, combined_radius, reduced_modulus
 from .jkr import JKRCylinder, JKRSphere, PullOff
 from .lennard_jones import LennardJones
 from .persson import PerssonContact
+from .persson_areal import ArealSpectrum, PerssonArealContact, PerssonArealFriction
 from .persson_friction import PerssonFriction
 from .spectrum import LineSpectrum
 from .summits import (RoughnessMoments, summit_height_density, summit_joint_density,
@@ -53,9 +58,10 @@ from .wavy import (JohnsonWavy, johnson_pull_off_load, johnson_pull_off_penetrat
                    westergaard_pressure)
 
 __all__ = [
-    "AsperityModel", "DMTSphere", "FullerTabor", "GreenwoodWilliamson", "HeightCurvatureModel",
-    "HertzCylinder", "HertzSphere", "JKRCylinder", "JKRSphere", "JohnsonWavy", "LennardJones",
-    "LineSpectrum", "PerssonContact", "PerssonFriction", "PullOff", "RoughnessMoments",
+    "ArealSpectrum", "AsperityModel", "DMTSphere", "FullerTabor", "GreenwoodWilliamson",
+    "HeightCurvatureModel", "HertzCylinder", "HertzSphere", "JKRCylinder", "JKRSphere", "JohnsonWavy", "LennardJones",
+    "LineSpectrum", "PerssonArealContact", "PerssonArealFriction", "PerssonContact",
+    "PerssonFriction", "PullOff", "RoughnessMoments",
     "SimplifiedBGT", "combined_radius", "equivalent_crest_radius", "gaussian_tail_moment",
     "johnson_pull_off_load", "johnson_pull_off_penetration", "reduced_modulus",
     "summit_height_density", "summit_joint_density", "summit_mean_curvature", "tabor_parameter",

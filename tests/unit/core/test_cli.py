@@ -130,7 +130,8 @@ def test_plugins_json(capsys):
     code, out, err = run(capsys, "plugins", "--json")
     assert code == 0
     table = strict(out)
-    assert set(table) == {"profiles", "rheologies", "kernels", "solvers", "adhesion", "methods"}
+    assert set(table) == {"profiles", "rheologies", "kernels", "solvers", "adhesion", "methods",
+                          "surfaces"}
     names = {group: {e["name"] for e in entries} for group, entries in table.items()}
     assert {"sinusoid", "self-affine", "measured"} <= names["profiles"]
     assert {"elastic", "standard-linear-solid", "prony"} <= names["rheologies"]

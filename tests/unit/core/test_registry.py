@@ -161,7 +161,7 @@ def test_name_of_tolerates_spaces_in_value(plugin_module):
 
 def test_module_registries_hold_builtins():
     assert set(_registry.REGISTRIES) == {"profiles", "rheologies", "kernels", "solvers", "adhesion",
-                                         "methods"}
+                                         "methods", "surfaces"}
     assert {"sinusoid", "self-affine"} <= set(_registry.profiles.names())
     assert {"elastic", "standard-linear-solid", "prony"} <= set(_registry.rheologies.names())
     assert {"half-plane", "confined-layer", "free-layer"} <= set(_registry.kernels.names())
