@@ -1,4 +1,4 @@
-r"""Layers of finite thickness ``d`` (thesis eqs. 2.41-2.44, Fig. 2.11).
+r"""Layers of finite thickness ``d`` (thesis equations 2.41-2.44, figure 2.11).
 
 ``A_m(q0 d)`` of eqs. 2.42 (confined: bonded to a rigid plate) and 2.43 (free: uniform pressure on
 top) are evaluated in a form multiplied through by ``e^{-2t}`` (``t = m q0 d``), so that neither

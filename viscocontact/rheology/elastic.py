@@ -1,4 +1,4 @@
-"""A purely elastic solid: ``E(ω) = E`` at every frequency (Hooke's law, thesis eq. 2.4)."""
+"""A purely elastic solid: ``E(ω) = E`` at every frequency (Hooke's law, thesis equation 2.4)."""
 from __future__ import annotations
 
 import attrs

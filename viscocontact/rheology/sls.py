@@ -1,4 +1,4 @@
-"""The standard linear solid: one retardation time (thesis eqs. 4.4-4.5)."""
+"""The standard linear solid: one retardation time (thesis equations 4.4-4.5)."""
 from __future__ import annotations
 
 import math

@@ -1,4 +1,5 @@
-"""Newton-Raphson with an analytic or finite-difference Jacobian (thesis §4.5.1, eqs. 4.33-4.37)."""
+"""Newton-Raphson with an analytic or finite-difference Jacobian (thesis §4.5.1, equations
+4.33-4.37)."""
 from __future__ import annotations
 
 import attrs
