@@ -105,3 +105,14 @@ def test_the_result_columns_page_names_every_column():
     text = (DOCS / "results.md").read_text()
     missing = [c for c in COLUMNS if f"`{c}`" not in text]
     assert not missing
+
+
+def test_the_changelog_has_one_short_entry_per_change():
+    """History goes in the changelog one entry per user-visible change; measurements go into
+    ``benchmarks/results/`` and commit messages, not into the entries."""
+    text = (DOCS.parent / "CHANGELOG.md").read_text()
+    entries = [" ".join(e.split()) for e in
+               re.findall(r"^- .*?(?=\n- |\n#|\Z)", text, flags=re.S | re.M)]
+    assert len(entries) > 10
+    long = [e[:80] for e in entries if len(e) > 300]
+    assert not long, long
