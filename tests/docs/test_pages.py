@@ -73,12 +73,16 @@ def test_the_tutorial_is_an_executed_notebook():
 
 
 def test_the_tutorial_walks_the_newcomers_path():
+    """Install, first solve, sweep, Dataset, figure, Maugis–Dugdale: one page, in that order,
+    closed by its own timing."""
     text = (DOCS / "getting-started.md").read_text()
-    steps = ["vc.solve(\"examples/scenes/sinusoid.toml\")", "vc.ContactProblem(", "vc.Sweep(",
+    steps = ["pip install", "vc.solve(\"examples/scenes/sinusoid.toml\")", "vc.ContactProblem(",
+             "vc.Sweep(",
              "vc.run_study(", ".to_xarray()", "vc.plot_study(", "examples/scenes/maugis_dugdale.toml"]
     positions = [text.find(step) for step in steps]
     assert -1 not in positions, [s for s, p in zip(steps, positions) if p == -1]
     assert positions == sorted(positions)
+    assert "time.perf_counter() - _started" in text.split("## How long this page takes")[1]
 
 
 def test_the_api_page_lists_every_public_name():
