@@ -173,4 +173,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except BrokenPipeError:      # the reader stopped early (``| head``): not an error
+        sys.stderr.close()
+        sys.exit(0)
