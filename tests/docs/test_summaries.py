@@ -11,9 +11,10 @@ import pytest
 PACKAGE = Path(__file__).resolve().parents[2] / "viscocontact"
 
 #: Abbreviations after which a period does not end a sentence; Sphinx's autosummary cuts a
-#: summary at the first period followed by a space unless it ends one of its own few (e.g., i.e.).
+#: summary at the first period followed by a space unless it ends one of its own few ("e.g.",
+#: "i.e.", "Mr.", "Mrs.", "Dr."), which are therefore allowed here.
 ABBREVIATIONS = ("eq", "eqs", "Eq", "Eqs", "fig", "Fig", "Figs", "ref", "Ref", "sec", "Sec",
-                 "ch", "Ch", "cf", "vs", "no", "No", "al", "approx", "resp", "e.g", "i.e", "etc")
+                 "ch", "Ch", "cf", "vs", "no", "No", "al", "approx", "resp", "etc")
 
 
 def _modules() -> list[Path]:
@@ -45,3 +46,34 @@ def test_module_summary_is_a_whole_sentence(path):
 ])
 def test_first_sentence(text, expected):
     assert first_sentence(text) == expected
+
+
+def _api_page_objects():
+    """The objects the public API page lists, as (name, object)."""
+    import importlib
+
+    import viscocontact as vc
+
+    text = (PACKAGE.parent / "docs" / "api.rst").read_text()
+    names = re.findall(r"^   ([\w.]+)$", text, flags=re.M)
+    out = []
+    for name in names:
+        if "." in name:
+            module, attribute = name.rsplit(".", 1)
+            out.append((name, getattr(importlib.import_module(f"viscocontact.{module}"),
+                                      attribute)))
+        else:
+            out.append((name, getattr(vc, name)))
+    return out
+
+
+def test_the_api_pages_summaries_are_whole_sentences():
+    """The curated API page shows the first sentence of every object it lists."""
+    import inspect
+
+    cut = []
+    for name, obj in _api_page_objects():
+        sentence = first_sentence(inspect.getdoc(obj) or "")
+        if not sentence or re.split(r"[\s(]", sentence)[-1] in ABBREVIATIONS:
+            cut.append(f"{name}: {sentence[-50:]!r}")
+    assert not cut, cut

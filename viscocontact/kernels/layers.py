@@ -79,7 +79,7 @@ class _Layer(GreenKernel):
 
 @attrs.frozen(kw_only=True)
 class ConfinedLayer(_Layer):
-    """Layer of dimensionless thickness ``q0·d`` bonded to a rigid plate (eq. 2.42).
+    """Layer of dimensionless thickness ``q0·d`` bonded to a rigid plate (equation 2.42).
 
     Parameters
     ----------
@@ -95,7 +95,7 @@ class ConfinedLayer(_Layer):
 
 @attrs.frozen(kw_only=True)
 class FreeLayer(_Layer):
-    """Layer of dimensionless thickness ``q0·d`` under uniform pressure on top (eq. 2.43).
+    """Layer of dimensionless thickness ``q0·d`` under uniform pressure on top (equation 2.43).
 
     Parameters
     ----------

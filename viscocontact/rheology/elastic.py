@@ -19,7 +19,7 @@ def _float(value):
 
 @attrs.frozen(kw_only=True)
 class Elastic(Rheology):
-    """Hookean solid, ``σ = E ε`` (eq. 2.4); the limit ``β → 1`` of every viscoelastic model.
+    """Hookean solid, ``σ = E ε`` (equation 2.4); the limit ``β → 1`` of every viscoelastic model.
 
     Parameters
     ----------

@@ -19,7 +19,7 @@ def _merit(r: np.ndarray) -> float:
 
 @attrs.frozen(kw_only=True)
 class Newton(FiniteDifferenceOptions, NonlinearSolver):
-    """Newton-Raphson: ``x_{k+1} = x_k - t_k·J(x_k)⁻¹ r(x_k)`` (eq. 4.35).
+    """Newton-Raphson: ``x_{k+1} = x_k - t_k·J(x_k)⁻¹ r(x_k)`` (equation 4.35).
 
     Parameters
     ----------
