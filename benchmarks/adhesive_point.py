@@ -16,7 +16,7 @@ for a four-minute run of the crowded corners would put into the ratios). The med
 the median of the seeds' ratios. The solves run BLAS on one thread too; with the threads of
 ``--threads`` (default ``VISCOCONTACT_THREADS`` or the cores) their influence loop splits its
 rows, the finite-δX borders' solves split their columns, and the borders' rows and columns are
-computed while the matrix is factorised (``docs/performance.md`` §13-14; the same bits on any
+computed while the matrix is factorised (``benchmarks/results`` §13-14; the same bits on any
 count). Prints one line per seed and the median; ``--profile FILE`` writes the cProfile
 statistics of the first seed to FILE instead of timing the rest.
 

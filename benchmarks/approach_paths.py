@@ -7,7 +7,7 @@ The points (thesis §4.6 scene: ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.
 ``StandardLinearSolid(beta=10)``, ``EnergyBalance(gamma=2.387e-7)``, Broyden, default mesh):
 seeds 11-16 at p̃∞ = 0.1, ζ = 1e-2, and seeds 11-13 at (p̃∞, ζ) = (0.3, 1e-2), (0.1, 1) and
 (0.3, 1e-4); 15 in all. Which equilibrium a point reaches from first touch can depend on where
-the path's steps land relative to folds, births and merges (``docs/performance.md`` §11-12), so
+the path's steps land relative to folds, births and merges (``benchmarks/results`` §11-12), so
 a change of the approach path is judged by the equilibria it reaches as well as by its
 evaluations: a path ``--finer`` times finer is the reference. Each point is solved at the
 default path step and at the finer one, and one line is printed per point; ``--jsonl`` also

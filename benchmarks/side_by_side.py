@@ -3,8 +3,8 @@
     python benchmarks/side_by_side.py OLD_TREE NEW_TREE [--cases wavy,rough,rough-b] [--repeats 2]
 
 Each run imports viscocontact from the given tree (``PYTHONPATH``) in a new interpreter, so the
-two codes see the same machine load in turn; this is how the before/after tables of
-``docs/performance.md`` are measured (a git worktree of the old commit serves as OLD_TREE).
+two codes see the same machine load in turn; this is how the before/after measurements of
+``benchmarks/results`` are made (a git worktree of the old commit serves as OLD_TREE).
 Prints one JSON line per run: tree, case, seconds, Ã, residual evaluations, converged.
 
 Cases (the thesis's units, from first touch):

@@ -1,4 +1,5 @@
-"""The dimensionless groups of a scene (thesis eq. 4.17) and its Tabor parameter (eq. 1.48).
+"""The dimensionless groups of a scene (thesis equation 4.17) and its Tabor parameter (equation
+1.48).
 
 :func:`dimensionless_groups` is what ``viscocontact describe`` prints.
 

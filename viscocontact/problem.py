@@ -43,7 +43,7 @@ class Prepared:
 
 @attrs.frozen(kw_only=True)
 class ContactProblem:
-    """A rigid periodic profile sliding on a viscoelastic solid (dimensionless, eq. 4.17).
+    """A rigid periodic profile sliding on a viscoelastic solid (dimensionless, equation 4.17).
 
     Parameters
     ----------

@@ -19,7 +19,7 @@ class SolveStatus(enum.Enum):
 
 @attrs.frozen(kw_only=True, repr=False)
 class ContactResult:
-    """Equilibrium of one scene (dimensionless, eq. 4.17).
+    """Equilibrium of one scene (dimensionless, equation 4.17).
 
     Attributes
     ----------

@@ -383,7 +383,7 @@ def _check_physical(inst, attribute, value):
 
 @attrs.frozen(kw_only=True)
 class Scene:
-    """One steady-sliding contact problem in the dimensionless groups of eq. 4.17.
+    """One steady-sliding contact problem in the dimensionless groups of equation 4.17.
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Edge closing conditions: ``NoAdhesion`` (bounded stress), ``EnergyBalance`` (eqs. 4.9-4.20)
+"""Edge closing conditions: ``NoAdhesion`` (bounded stress), ``EnergyBalance`` (equations 4.9-4.20)
 and ``MaugisDugdale`` (cohesive zones of finite range)."""
 from .base import AdhesionLimitation, AdhesionModel, EdgeTerms
 from .energy_balance import DEFAULT_EDGE_PERTURBATION, EnergyBalance

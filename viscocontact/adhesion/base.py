@@ -66,7 +66,7 @@ class AdhesionLimitation(ViscoContactError):
 
 @attrs.frozen(kw_only=True)
 class EdgeTerms:
-    """Energy terms at every edge (dimensionless, eq. 4.20 units).
+    """Energy terms at every edge (dimensionless, equation 4.20 units).
 
     Attributes
     ----------

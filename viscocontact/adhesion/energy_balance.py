@@ -1,4 +1,5 @@
-r"""Viscoelastic Griffith balance at every edge (thesis eqs. 4.9-4.14; dimensionless eq. 4.20).
+r"""Viscoelastic Griffith balance at every edge (thesis equations 4.9-4.14; dimensionless equation
+4.20).
 
 ``δŨ/δX̃ + δL̃_P/δX̃ = 2πγ̃/Λ̃²`` for an outward virtual advance ``δX`` of each edge at fixed
 penetration.

@@ -1,4 +1,5 @@
-r"""What happens at the contact edges: stress-intensity factors and the energy terms of eqs. 4.9-4.14.
+r"""What happens at the contact edges: stress-intensity factors and the energy terms of equations
+4.9-4.14.
 
 Energies use the *stored-energy* sign (``U = (1/2)∫ p u dx >= 0``; the thesis's eqs. 4.13-4.14 as
 printed, with σ tensile-positive, give minus these), in the units of eq. 4.17, so that at

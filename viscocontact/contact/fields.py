@@ -1,4 +1,5 @@
-r"""The stress field for given contact edges (thesis eqs. 4.18, 4.30-4.32) and what follows from it.
+r"""The stress field for given contact edges (thesis equations 4.18, 4.30-4.32) and what follows
+from it.
 
 For fixed edges the problem is linear: ``B σ̃ = r̃(ξ) - 1 + Δ̃`` at the collocation points, with
 ``B`` the influence matrix of the prepared kernel. In penetration control ``Δ̃`` is given; in load

@@ -1,4 +1,4 @@
-r"""Edge-clustered meshes of contact regions (thesis eqs. 4.21-4.29).
+r"""Edge-clustered meshes of contact regions (thesis equations 4.21-4.29).
 
 For a contact ``[X_{2j-1}, X_{2j}]`` with centre μ and half-width α, a uniform grid
 ``ζ_l = -α + 2αl/N`` is mapped by

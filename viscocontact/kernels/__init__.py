@@ -1,4 +1,4 @@
-"""Periodic viscoelastic Green kernels (thesis eqs. 2.40-2.47, 4.1-4.3, 4.19).
+"""Periodic viscoelastic Green kernels (thesis equations 2.40-2.47, 4.1-4.3, 4.19).
 
 ``GreenKernel`` describes the elastic geometry (``HalfPlane``, ``ConfinedLayer``, ``FreeLayer``);
 ``kernel.prepare(rheology, zeta)`` returns a :class:`PreparedKernel` whose ``influence`` gives the

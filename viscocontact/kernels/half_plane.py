@@ -1,4 +1,4 @@
-"""Periodic viscoelastic half-plane (thesis eq. 4.3; dimensionless eq. 4.19)."""
+"""Periodic viscoelastic half-plane (thesis equation 4.3; dimensionless equation 4.19)."""
 from __future__ import annotations
 
 import attrs

@@ -1,4 +1,4 @@
-r"""Layers of finite thickness ``d`` (thesis eqs. 2.41-2.44, Fig. 2.11).
+r"""Layers of finite thickness ``d`` (thesis equations 2.41-2.44, figure 2.11).
 
 ``A_m(q0 d)`` of eqs. 2.42 (confined: bonded to a rigid plate) and 2.43 (free: uniform pressure on
 top) are evaluated in a form multiplied through by ``e^{-2t}`` (``t = m q0 d``), so that neither
@@ -79,7 +79,7 @@ class _Layer(GreenKernel):
 
 @attrs.frozen(kw_only=True)
 class ConfinedLayer(_Layer):
-    """Layer of dimensionless thickness ``q0·d`` bonded to a rigid plate (eq. 2.42).
+    """Layer of dimensionless thickness ``q0·d`` bonded to a rigid plate (equation 2.42).
 
     Parameters
     ----------
@@ -95,7 +95,7 @@ class ConfinedLayer(_Layer):
 
 @attrs.frozen(kw_only=True)
 class FreeLayer(_Layer):
-    """Layer of dimensionless thickness ``q0·d`` under uniform pressure on top (eq. 2.43).
+    """Layer of dimensionless thickness ``q0·d`` under uniform pressure on top (equation 2.43).
 
     Parameters
     ----------

@@ -1,4 +1,5 @@
-r"""Maugis–Dugdale adhesive wavy contact (finite-range adhesion), in the units of thesis eq. 4.17.
+r"""Maugis–Dugdale adhesive wavy contact (finite-range adhesion), in the units of thesis equation
+4.17.
 
 A rigid sinusoid ``r̃ = cos x̃`` (``Λ``-scaled, ``x̃ = q0 x`` on ``[-π, π)``) pressed on an elastic
 half-plane of modulus ``E = β E0``. Between the surfaces acts a Dugdale law: a uniform tensile

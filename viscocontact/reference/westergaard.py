@@ -1,4 +1,4 @@
-r"""Westergaard's adhesionless wavy contact, in the units of thesis eq. 4.17.
+r"""Westergaard's adhesionless wavy contact, in the units of thesis equation 4.17.
 
 A rigid sinusoid ``r = Λ cos(q0 x)`` pressed on an elastic half-plane of plane-strain modulus
 ``E* = E/(1-ν²)``; contact ``|x̃| < a`` (``Ã = 2a``), ``s = sin(a/2)``:

@@ -925,7 +925,7 @@ def markdown(plan, sections, ft, timing) -> str:
          f"of the thesis's Chapters 1 and 3 ({plan.name} run). Every number below is computed by "
          "`viscocontact/reports/validation.py`; regenerate with `viscocontact validate` "
          "(`--quick` for a short smoke run). Units are the dimensionless groups of eq. 4.17 "
-         "(`docs/README.md`).", "",
+         "(`docs/model.md`).", "",
          "**Headlines.**", "",
          f"* Closed forms at {plan.elements} elements per contact: largest |error of Ã| "
          f"{fmt(max(abs(w['error']) for w in cf['westergaard']))} (Westergaard), "

@@ -1,4 +1,4 @@
-"""A purely elastic solid: ``E(ω) = E`` at every frequency (Hooke's law, thesis eq. 2.4)."""
+"""A purely elastic solid: ``E(ω) = E`` at every frequency (Hooke's law, thesis equation 2.4)."""
 from __future__ import annotations
 
 import attrs
@@ -19,7 +19,7 @@ def _float(value):
 
 @attrs.frozen(kw_only=True)
 class Elastic(Rheology):
-    """Hookean solid, ``σ = E ε`` (eq. 2.4); the limit ``β → 1`` of every viscoelastic model.
+    """Hookean solid, ``σ = E ε`` (equation 2.4); the limit ``β → 1`` of every viscoelastic model.
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Fit a Prony series (eq. 2.17) to measured storage and loss moduli (DMA master curves).
+"""Fit a Prony series (equation 2.17) to measured storage and loss moduli (DMA master curves).
 
 Method: the relaxation times are fixed on a log-spaced grid covering the data's frequency range and
 the moduli ``E0, E_i >= 0`` solve a non-negative least-squares problem (:func:`scipy.optimize.nnls`)

@@ -235,7 +235,7 @@ def _cached_creep(relaxed: float, moduli: bytes, times: bytes) -> CreepSpectrum:
 # ---- the rheology ----------------------------------------------------------------------------
 @attrs.frozen(kw_only=True)
 class PronySeries(Rheology):
-    """Generalised Maxwell solid: relaxation function as a Prony series (eq. 2.17).
+    """Generalised Maxwell solid: relaxation function as a Prony series (equation 2.17).
 
     ``R(t) = E0 + Σ_i E_i exp(-t/τ_i)``, ``E(ω) = E0 + Σ_i E_i iωτ_i/(1 + iωτ_i)`` (eq. 2.24).
 

@@ -1,4 +1,4 @@
-"""The standard linear solid: one retardation time (thesis eqs. 4.4-4.5)."""
+"""The standard linear solid: one retardation time (thesis equations 4.4-4.5)."""
 from __future__ import annotations
 
 import math
@@ -29,7 +29,7 @@ def _beta_above_one(inst, attribute, value):
 
 @attrs.frozen(kw_only=True)
 class StandardLinearSolid(Rheology):
-    """Standard linear solid (Zener model) with creep function eq. 4.4.
+    """Standard linear solid (Zener model) with the creep function of equation 4.4.
 
     ``J(t) = H(t)·[1/E0 - (1/E1)·exp(-t/τ)]``, ``1/E1 = 1/E0 - 1/E∞`` (eq. 4.5).
 

@@ -62,7 +62,7 @@ class InverseJacobian:
 
 @attrs.frozen(kw_only=True)
 class Broyden(FiniteDifferenceOptions, NonlinearSolver):
-    """Broyden's method ``x_{k+1} = x_k - α·H_k·r(x_k)`` (eqs. 4.40-4.42).
+    """Broyden's method ``x_{k+1} = x_k - α·H_k·r(x_k)`` (equations 4.40-4.42).
 
     Parameters
     ----------

@@ -1,4 +1,5 @@
-"""Newton-Raphson with an analytic or finite-difference Jacobian (thesis §4.5.1, eqs. 4.33-4.37)."""
+"""Newton-Raphson with an analytic or finite-difference Jacobian (thesis §4.5.1, equations
+4.33-4.37)."""
 from __future__ import annotations
 
 import attrs
@@ -18,7 +19,7 @@ def _merit(r: np.ndarray) -> float:
 
 @attrs.frozen(kw_only=True)
 class Newton(FiniteDifferenceOptions, NonlinearSolver):
-    """Newton-Raphson: ``x_{k+1} = x_k - t_k·J(x_k)⁻¹ r(x_k)`` (eq. 4.35).
+    """Newton-Raphson: ``x_{k+1} = x_k - t_k·J(x_k)⁻¹ r(x_k)`` (equation 4.35).
 
     Parameters
     ----------

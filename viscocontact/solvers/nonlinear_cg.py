@@ -1,4 +1,4 @@
-"""Nonlinear conjugate gradients on a merit function (thesis §4.5.3, eqs. 4.43-4.45)."""
+"""Nonlinear conjugate gradients on a merit function (thesis §4.5.3, equations 4.43-4.45)."""
 from __future__ import annotations
 
 import warnings

@@ -1,4 +1,4 @@
-r"""Quasi-static approach-retraction cycles in penetration control (thesis §4.6.1, Figs. 4.8-4.9).
+r"""Quasi-static approach-retraction cycles in penetration control (thesis §4.6.1, figures 4.8-4.9).
 
 The rigid profile, sliding at a fixed ζ, is pressed in and pulled out in steps of the penetration
 Δ̃: approach from ``start`` up to ``max_penetration``, then retraction down to detachment (or to

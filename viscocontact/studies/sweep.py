@@ -1,4 +1,4 @@
-"""ζ-sweeps: contact area and friction against the dimensionless speed (thesis Figs. 4.7, 4.10).
+"""ζ-sweeps: contact area and friction against the dimensionless speed (thesis figures 4.7, 4.10).
 
 A sweep solves its base scene at every ζ of a list (log-spaced by :func:`log_zetas`), for every
 load of a list (all in load control, p̃∞, or all in penetration control, Δ̃), adhesive and

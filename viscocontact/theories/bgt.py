@@ -1,4 +1,4 @@
-r"""Greenwood's (2006) simplified BGT model (thesis eqs. 3.29-3.33).
+r"""Greenwood's (2006) simplified BGT model (thesis equations 3.29-3.33).
 
 Intrinsically 3D (isotropic Gaussian surface; the profile is its cross-section, see
 :mod:`viscocontact.theories.summits`). Bush, Gibson and Thomas treat every summit as an elliptic

@@ -1,4 +1,5 @@
-r"""Greenwood-Williamson (thesis eqs. 3.20-3.27) and Fuller-Tabor (§3.2, eq. 3.28) rough contact.
+r"""Greenwood-Williamson (thesis equations 3.20-3.27) and Fuller-Tabor (§3.2, equation 3.28) rough
+contact.
 
 Intrinsically 3D: identical spherical summits of radius ``R``, Gaussian summit heights of standard
 deviation ``σ_s`` (eq. 3.25), ``D_s`` summits per unit area, each in independent Hertzian (GW) or

@@ -1,4 +1,5 @@
-r"""Greenwood-Williamson with height-dependent summit curvature (Carbone 2009; thesis eqs. 3.46-3.49).
+r"""Greenwood-Williamson with height-dependent summit curvature (Carbone 2009; thesis equations
+3.46-3.49).
 
 Intrinsically 3D (isotropic Gaussian surface; the profile is its cross-section, see
 :mod:`viscocontact.theories.summits`). Every summit of height ``ξ = z/√m0`` is a Hertzian sphere

@@ -1,4 +1,5 @@
-r"""Hertz's adhesionless contact of a sphere (thesis §1.1, eqs. 1.4, 1.7-1.15) and of a cylinder.
+r"""Hertz's adhesionless contact of a sphere (thesis §1.1, equations 1.4, 1.7-1.15) and of a
+cylinder.
 
 Nomenclature
 ------------

@@ -1,4 +1,5 @@
-r"""JKR adhesive contact of a sphere (thesis §1.4, eqs. 1.39-1.47) and of a cylinder (line contact).
+r"""JKR adhesive contact of a sphere (thesis §1.4, equations 1.39-1.47) and of a cylinder (line
+contact).
 
 Infinitely short-range adhesion of Dupré energy ``Δγ`` (eq. 1.19); ``R``, ``E*``, ``a``, ``δ``, ``P``
 as in :mod:`viscocontact.theories.hertz`. Tension is negative: ``P < 0`` pulls, ``δ < 0`` is a

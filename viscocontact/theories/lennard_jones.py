@@ -1,4 +1,4 @@
-r"""The Lennard-Jones traction-separation law between two half-spaces (thesis eq. 1.20).
+r"""The Lennard-Jones traction-separation law between two half-spaces (thesis equation 1.20).
 
 .. math::
     \sigma(g) = \frac{8\Delta\gamma}{3\varepsilon}

@@ -1,4 +1,5 @@
-r"""Persson's theory of the elastic contact area (thesis §3.3, eqs. 3.34-3.45), for a 1D profile.
+r"""Persson's theory of the elastic contact area (thesis §3.3, equations 3.34-3.45), for a 1D
+profile.
 
 Derivation for line roughness on a half-plane
 ---------------------------------------------

@@ -1,4 +1,5 @@
-r"""The Tabor parameter (thesis eq. 1.48) and the crest radius of a rough profile (eq. 4.55).
+r"""The Tabor parameter (thesis equation 1.48) and the crest radius of a rough profile (equation
+4.55).
 
 .. math::
     \mu_T = \Big(\frac{R\,\Delta\gamma^2}{E^{*2} Z_0^3}\Big)^{1/3} = \frac{l^{2/3}R^{1/3}}{Z_0},

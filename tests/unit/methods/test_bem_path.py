@@ -161,7 +161,7 @@ def test_a_crossing_moves_the_fastest_edge_alone_until_it_lands():
 def test_a_crossing_lands_on_the_approach_steps_probation():
     """The landing's solve stops where it gains no two digits in four evaluations and hands
     over to the fallback march (where the contact set has no equilibrium near the landing,
-    Broyden wandered 35-47 evaluations before its stall rule; ``docs/performance.md`` §18)."""
+    Broyden wandered 35-47 evaluations before its stall rule; ``benchmarks/results`` §18)."""
     from viscocontact.methods.bem.path import APPROACH_BUDGET, APPROACH_PROBATION
 
     eq = _Edges(lead=0, root=0.6)

@@ -44,7 +44,7 @@ class Discretization:
         Largest penetration step ``Δ̃`` of the approach path. On a rough adhesive profile the
         equilibrium reached from first touch can depend on it: at ζ = 1e-2 about a quarter of the
         thesis profile's points land on another equilibrium at a ten times smaller step
-        (``docs/performance.md`` §11); a study that needs the quasi-static branch point by point
+        (``benchmarks/results`` §11); a study that needs the quasi-static branch point by point
         should check its points at a smaller step.
     interior_resolution : float or None
         Elements per shortest wavelength of the profile (:attr:`Profile.shortest_wavelength`)

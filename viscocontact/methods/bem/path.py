@@ -38,14 +38,14 @@ APPROACH_PROBATION = 4
 #: sooner (160 evaluations) and no converging one. They apply to a step's first solver call
 #: (:meth:`Equilibrium.solve`), and not on the smallest step, whose failure hands the point it
 #: reached on to the fallback march: 15-47 evaluations fewer a crowded corner
-#: (``docs/performance.md`` §16).
+#: (``benchmarks/results`` §16).
 APPROACH_PACE = (0.9, 0.6)
 #: The corrector of an intermediate approach step (not the last, at the target) converges
 #: once ``max|r|`` is this fraction of its value at the predicted start, or at the tolerance
 #: (:meth:`Equilibrium.solve`'s ``reduction``): the state then lies within a ten-thousandth of
 #: the predictor's error from the branch, while the next step's prediction errs by about
 #: :data:`PREDICTOR_ERROR` of the half-widths. It saves the last one or two of the three to
-#: five evaluations of a converging step (``docs/performance.md`` §16).
+#: five evaluations of a converging step (``benchmarks/results`` §16).
 STEP_REDUCTION = 1e-4
 #: Growth per converged step of the largest step allowed after a failed one on an adhesive
 #: approach (:meth:`Path.approach`). Adhesionless approaches keep growing as before: with the
@@ -430,7 +430,7 @@ class Path:
         lies beyond the next step, or the crossing finds the branch's continuation
         (:meth:`cross`). The fastest edge is the one taken: the first fold of each edge
         separately (tried too) took other branches on 4 of 15 points of the thesis rough
-        profile where the fastest edge took them on 2 (``docs/performance.md`` §12).
+        profile where the fastest edge took them on 2 (``benchmarks/results`` §12).
         """
         (d0, s0), (d1, s1) = before, after
         if s0 is None or s1 is None or not (s1 > s0 > 0) or not d1 > d0:
@@ -466,7 +466,7 @@ class Path:
         is its distance to the fold, positive for an edge that speeds up. The earliest fold
         within the step is taken, and its edge leads the crossing (:meth:`cross`): on the thesis
         rough profile the edge that folds first is often not the fastest one, whose own fold
-        lies beyond the step (``docs/performance.md`` §21). One state gives it, where
+        lies beyond the step (``benchmarks/results`` §21). One state gives it, where
         :meth:`fold_ahead` needs two of the same contact set (none right after a crossing, a
         birth or a merge). None when the start was scaled down (:meth:`predicted`), no edge
         folds within the step, or the derivatives are missing.
@@ -516,7 +516,7 @@ class Path:
         has no equilibrium near the landing (a neck about to close), Broyden found none in 30
         iterations (35-47 evaluations, 14 s on a crowded corner's ten contacts) before the
         fallback march merged the contacts in a few evaluations; on probation it hands over
-        after five (``docs/performance.md`` §18). Unless the landing is the end of the path
+        after five (``benchmarks/results`` §18). Unless the landing is the end of the path
         (``polish``), it is an intermediate state, solved to :data:`STEP_REDUCTION` of its start's
         residual as the approach steps are (§21).
         """
