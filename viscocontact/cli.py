@@ -5,18 +5,24 @@ Each subcommand is a pair of small functions registered in :data:`SUBCOMMANDS`:
 input (:class:`ValidationError`, :class:`PluginError`, a foreign or damaged study file, missing
 files, TOML syntax) print one line to stderr and return exit code 2, never a traceback.
 ``sweep`` and ``cycle`` return 1 when some point failed (it is stored with its reason).
+Ctrl-C prints one line (for a study: what its file keeps and how to resume it) and returns 130;
+output piped into a reader that stops early (``| head``) ends quietly with 141.
 """
 from __future__ import annotations
 
 import argparse
+import contextlib
+import os
 import sys
 import tomllib
 import warnings
-from typing import Callable, Sequence
+from typing import Callable, Iterator, Sequence
 
 from .errors import ValidationError, ViscoContactError
 
 EXIT_USAGE = 2
+EXIT_INTERRUPTED = 130      # 128 + SIGINT, as a shell reports a command stopped by Ctrl-C
+EXIT_BROKEN_PIPE = 141      # 128 + SIGPIPE: the reader (``| head``) closed the pipe
 _PROG = "viscocontact"
 
 
@@ -68,9 +74,11 @@ def _run_describe(args: argparse.Namespace) -> int:
 
 
 def _path(name: str):
-    from pathlib import Path
+    """A file named on the command line; the README's ``examples/scenes/NAME.toml`` is the copy
+    shipped with the package when no such file exists here (:func:`viscocontact.data.scene_path`)."""
+    from .data import scene_path
 
-    return Path(name)
+    return scene_path(name)
 
 
 # ---- plugins ------------------------------------------------------------------------------------
@@ -254,14 +262,17 @@ def _run_study_file(args, kind: str, build) -> int:
         if not (args.resume and args.out):
             raise ValidationError("SCENE.toml", None, "a scene file (or --resume --out FILE.h5 "
                                                       "to continue a study file)")
-        data = resume(Path(args.out), **options)
+        out = Path(args.out)
+        with _kept_on_interrupt(kind, out):
+            data = resume(out, **options)
     else:
         from .scene import Scene
 
         scene_path = _path(args.scene)
         study = build(Scene.from_toml(scene_path))
         out = Path(args.out) if args.out else Path(f"{scene_path.stem}_{kind}.h5")
-        data = run(study, out, resume=args.resume, overwrite=args.force, **options)
+        with _kept_on_interrupt(kind, out):
+            data = run(study, out, resume=args.resume, overwrite=args.force, **options)
     if data.kind != kind:
         raise ValidationError("--out", str(data.path), f"a {kind} study file (it holds a "
                                                        f"{data.kind})")
@@ -272,6 +283,23 @@ def _run_study_file(args, kind: str, build) -> int:
         for f in plot_study(data):
             print(f"wrote {f}")
     return 1 if failed else 0
+
+
+class Interrupted(Exception):
+    """Ctrl-C during a command; the message says what is kept (exit code 130)."""
+
+
+@contextlib.contextmanager
+def _kept_on_interrupt(kind: str, out) -> Iterator[None]:
+    """Turn Ctrl-C during a study into :class:`Interrupted` saying what the file keeps and how
+    to go on (each finished point is in the file as soon as it is back)."""
+    try:
+        yield
+    except KeyboardInterrupt:
+        if not out.exists():
+            raise Interrupted(f"interrupted before {out} was written") from None
+        raise Interrupted(f"interrupted: the points finished so far are kept in {out}; go on "
+                          f"with: {_PROG} {kind} --resume --out {out}") from None
 
 
 def _report(data) -> int:
@@ -442,15 +470,10 @@ def _run_plot(args: argparse.Namespace) -> int:
 
 
 def _check_folder(option: str, name: str, what: str) -> None:
-    """A folder to write into (made if missing) must not be a file, nor lie below one."""
-    from pathlib import Path
+    """A folder to write into (made if missing): not a file nor below one, and writable."""
+    from ._outputs import check_folder
 
-    path = Path(name)
-    for folder in (path, *path.parents):
-        if folder.exists():
-            if not folder.is_dir():
-                raise ValidationError(option, name, f"{what} ({folder} is a file)")
-            return
+    check_folder(option, name, what)
 
 
 # ---- study --------------------------------------------------------------------------------------
@@ -541,6 +564,16 @@ def _one_line_warning(command: str):
     return show
 
 
+def _quiet_stdout() -> None:
+    """After a closed pipe: point stdout at the null device, so that the interpreter's final
+    flush of what is left does not fail again (Python's documented idiom for SIGPIPE)."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):   # no real stdout (captured): nothing to flush
+        pass
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit code (0 success, 2 bad input)."""
     parser = build_parser()
@@ -551,7 +584,18 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         with warnings.catch_warnings():
             warnings.showwarning = _one_line_warning(args.command)
-            return args.run(args)
+            code = args.run(args)
+        sys.stdout.flush()      # a closed pipe is found here, not at exit
+        return code
+    except Interrupted as exc:
+        print(f"{_PROG} {args.command}: {exc}", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except KeyboardInterrupt:
+        print(f"{_PROG} {args.command}: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except BrokenPipeError:
+        _quiet_stdout()
+        return EXIT_BROKEN_PIPE
     except ViscoContactError as exc:  # ValidationError, PluginError, StudyFileError
         print(f"viscocontact {args.command}: error: {_one_line(exc)}", file=sys.stderr)
     except tomllib.TOMLDecodeError as exc:

@@ -28,6 +28,31 @@ def _figure(**options):
     return Figure(**options)
 
 
+class _Figures:
+    """The two calls of :mod:`matplotlib.pyplot` that report generators make, on figures of
+    :func:`_figure`: no backend is selected or switched, and there is nothing to close."""
+
+    @staticmethod
+    def subplots(nrows: int = 1, ncols: int = 1, *, figsize=None, constrained_layout=False,
+                 **options):
+        fig = _figure(figsize=figsize, constrained_layout=constrained_layout)
+        return fig, fig.subplots(nrows, ncols, **options)
+
+    @staticmethod
+    def close(fig) -> None:
+        """Nothing to do: the figure is no part of pyplot's state."""
+
+    @property
+    def rcParams(self):
+        import matplotlib
+
+        return matplotlib.rcParams
+
+
+#: ``plt``-like drawing for library code (the report generators).
+pyplot_free = _Figures()
+
+
 def _colors() -> list:
     """The colours of matplotlib's property cycle (``rcParams``)."""
     import matplotlib

@@ -512,14 +512,18 @@ class Scene:
 
         A :class:`str` containing a newline or a ``=`` that is not an existing file is read as
         TOML text; anything else is a path (``FileNotFoundError`` if missing). TOML syntax errors
-        raise :class:`tomllib.TOMLDecodeError`.
+        raise :class:`tomllib.TOMLDecodeError`. The example scenes' paths of the README,
+        ``examples/scenes/NAME.toml``, read the copies shipped with the package when no such
+        file exists in the working folder.
         """
+        from .data import scene_path
+
         if isinstance(source, Path):
-            text = source.read_text(encoding="utf-8")
+            text = scene_path(source).read_text(encoding="utf-8")
         elif "\n" in source or ("=" in source and not Path(source).is_file()):
             text = source
         else:
-            text = Path(source).read_text(encoding="utf-8")
+            text = scene_path(source).read_text(encoding="utf-8")
         return cls.from_dict(tomllib.loads(text))
 
     def to_dict(self) -> dict[str, Any]:
