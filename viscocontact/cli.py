@@ -133,6 +133,9 @@ def _interior_resolution(text: str) -> float | None:
 
 def _configure_solve(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("scene", metavar="SCENE.toml", help="scene file")
+    parser.add_argument("-v", "--verbose", action="store_true", default=argparse.SUPPRESS,
+                        help="log each event of the solve (contacts born, merged, refined; "
+                             "grids) to stderr as it happens, with the seconds since it began")
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
     parser.add_argument("--fields", action="store_true",
                         help="include pressure, displacement and gap on the check grid")
@@ -542,6 +545,8 @@ def build_parser() -> argparse.ArgumentParser:
         description="Adhesive viscoelastic rough sliding contact "
                     "(dimensionless groups of the thesis's eq. 4.17).")
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument("-v", "--verbose", action="store_true",
+                        help="log what a solve does as it happens (to stderr)")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name, (configure, run) in SUBCOMMANDS.items():
         help_text = (run.__doc__ or "").strip().splitlines()[0] if run.__doc__ else None
@@ -564,6 +569,27 @@ def _one_line_warning(command: str):
     return show
 
 
+@contextlib.contextmanager
+def _verbose(on: bool) -> Iterator[None]:
+    """``-v``: the package's INFO records (solve events as they happen) on stderr."""
+    if not on:
+        yield
+        return
+    import logging
+
+    log = logging.getLogger("viscocontact")
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter(f"{_PROG}: %(message)s"))
+    level = log.level
+    log.addHandler(handler)
+    log.setLevel(logging.INFO)
+    try:
+        yield
+    finally:
+        log.removeHandler(handler)
+        log.setLevel(level)
+
+
 def _quiet_stdout() -> None:
     """After a closed pipe: point stdout at the null device, so that the interpreter's final
     flush of what is left does not fail again (Python's documented idiom for SIGPIPE)."""
@@ -582,7 +608,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SystemExit as exc:  # --help, --version, usage errors (argparse already printed)
         return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USAGE
     try:
-        with warnings.catch_warnings():
+        with warnings.catch_warnings(), _verbose(args.verbose):
             warnings.showwarning = _one_line_warning(args.command)
             code = args.run(args)
         sys.stdout.flush()      # a closed pipe is found here, not at exit

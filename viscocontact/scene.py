@@ -34,7 +34,7 @@ from typing import Any, Mapping, cast
 import attrs
 import numpy as np
 
-from . import _registry
+from . import _registry, defaults
 from ._toml import dumps
 from .errors import PluginError, ValidationError
 
@@ -43,9 +43,9 @@ COMPONENT_SECTIONS = {"profile": "profiles", "rheology": "rheologies", "kernel":
                       "adhesion": "adhesion", "solver": "solvers", "method": "methods"}
 SECTIONS = (*COMPONENT_SECTIONS, "load", "sliding", "physical")
 TOP_LEVEL_KEYS = ("poisson",)
-DEFAULT_KERNEL = "half-plane"
-DEFAULT_SOLVER = {True: "broyden", False: "bisection"}  # keyed by "is adhesive"
-DEFAULT_METHOD = "auto"
+DEFAULT_KERNEL = defaults.KERNEL
+DEFAULT_SOLVER = defaults.SOLVER  # keyed by "is adhesive"
+DEFAULT_METHOD = defaults.METHOD
 DEFAULT_EQUILIBRIUM_DISTANCE = 1e-9  # m, Z0 of the Tabor parameter
 
 #: ``[physical]`` keys: SI unit, allowed range (lo, hi, lo_open) and meaning.
@@ -122,6 +122,12 @@ def _check_number(field: str, value: Any, lo=None, hi=None, lo_open=False) -> No
         raise ValidationError(field, value, desc)
     if hi is not None and v > hi:
         raise ValidationError(field, value, desc)
+
+
+def did_you_mean(word: Any, names) -> str:
+    """`` (did you mean 'x'?)`` for the closest of ``names`` to a mistyped ``word``, or ``""``."""
+    close = difflib.get_close_matches(word, list(names), n=1) if isinstance(word, str) else []
+    return f" (did you mean {close[0]!r}?)" if close else ""
 
 
 def _freeze(mapping: Mapping | None) -> Mapping | None:
@@ -201,8 +207,7 @@ def build_component(section: str, table: Mapping[str, Any], *, lazy: bool = Fals
             if lazy and isinstance(exc.__cause__, ImportError):
                 return ComponentSpec(kind=kind, params=params)
             raise
-        close = difflib.get_close_matches(kind, names, n=1) if isinstance(kind, str) else []
-        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        hint = did_you_mean(kind, names)
         raise ValidationError(f"{section}.kind", kind, f"one of the registered {registry.group} "
                                                         f"names {names}{hint}") from None
     return _instantiate(section, kind, cls, params)
@@ -213,7 +218,8 @@ def _instantiate(section: str, kind: str, cls: type, params: dict[str, Any]) -> 
     for key in params:
         if key not in fields:
             raise ValidationError(f"{section}.{key}", params[key],
-                                  f"a key of {section} kind {kind!r}: one of {sorted(fields)}")
+                                  f"a key of {section} kind {kind!r}: one of {sorted(fields)}"
+                                  f"{did_you_mean(key, fields)}")
     required = [k for k, f in fields.items() if f.default is attrs.NOTHING]
     for key in required:
         if key not in params:
@@ -326,6 +332,24 @@ class Load:
                     else self.penetration)
 
 
+def _as_load(value: Any) -> Any:
+    """``Scene(load={"mean_pressure": 0.3})``: a mapping is read as the ``[load]`` table."""
+    if not isinstance(value, Mapping):
+        return value
+    for key in value:
+        if key not in ("mean_pressure", "penetration"):
+            raise ValidationError(f"load.{key}", value[key],
+                                  "a key of [load]: 'mean_pressure' or 'penetration'"
+                                  f"{did_you_mean(key, ('mean_pressure', 'penetration'))}")
+    return Load(**value)
+
+
+def _is_load(inst, attribute, value):
+    if not isinstance(value, Load):
+        raise ValidationError("Scene.load", value, "a Load or a mapping such as "
+                                                   "{'mean_pressure': 0.3} or {'penetration': 0.5}")
+
+
 def _is_instance_of_base(kind: str):
     def check(inst, attribute, value):
         if isinstance(value, ComponentSpec) and attribute.name in ("adhesion", "solver", "method"):
@@ -372,7 +396,8 @@ def _check_physical(inst, attribute, value):
         return
     for key, v in value.items():
         if key not in PHYSICAL_KEYS:
-            raise ValidationError(f"physical.{key}", v, f"one of {list(PHYSICAL_KEYS)}")
+            raise ValidationError(f"physical.{key}", v, f"one of {list(PHYSICAL_KEYS)}"
+                                                        f"{did_you_mean(key, PHYSICAL_KEYS)}")
         lo, hi, lo_open = PHYSICAL_KEYS[key][1]
         _check_number(f"physical.{key}", v, lo=lo, hi=hi, lo_open=lo_open)
     if all(k in value for k in COHESIVE_KEYS):
@@ -440,7 +465,7 @@ class Scene:
     solver: Any = attrs.field(default=attrs.Factory(_default_solver, takes_self=True),
                               validator=_is_instance_of_base("solvers"))
     method: Any = attrs.field(factory=_default_method, validator=_is_instance_of_base("methods"))
-    load: Load = attrs.field(validator=attrs.validators.instance_of(Load))
+    load: Load = attrs.field(converter=_as_load, validator=_is_load)
     zeta: float = attrs.field(converter=_as_float, validator=_check_zeta)
     poisson: float = attrs.field(default=attrs.Factory(_default_poisson, takes_self=True),
                                  converter=_as_float, validator=_check_poisson)
@@ -542,6 +567,31 @@ class Scene:
     def to_toml(self) -> str:
         """TOML text of :meth:`to_dict`; ``Scene.from_toml(scene.to_toml()) == scene``."""
         return dumps(self.to_dict())
+
+    def replace(self, **changes: Any) -> "Scene":
+        """This scene with some fields replaced, checked like a new one.
+
+        ``changes`` are fields of :class:`Scene` (``zeta``, ``load``, ``adhesion``, ...); a load
+        may be a mapping. An unknown name is a :class:`ValidationError` with the closest field.
+        A ``physical`` table is kept as it is and must agree with the changed values (pass
+        ``physical=None`` to drop it).
+
+        Examples
+        --------
+        >>> from viscocontact.scene import Scene
+        >>> base = Scene.from_dict({"profile": {"kind": "sinusoid", "amplitude": 0.1},
+        ...                         "rheology": {"kind": "elastic"},
+        ...                         "load": {"mean_pressure": 0.3}})
+        >>> base.replace(load={"penetration": 0.5}).load.controlled
+        'penetration'
+        """
+        names = [f.name for f in attrs.fields(Scene)]
+        for key in changes:
+            if key not in names:
+                raise ValidationError(f"Scene.{key}", changes[key],
+                                      f"a field of Scene: one of {names}"
+                                      f"{did_you_mean(key, names)}")
+        return attrs.evolve(self, **changes)
 
     def resolve(self) -> "Scene":
         """This scene with every :class:`ComponentSpec` built into its component object."""
@@ -733,10 +783,12 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
     for key, value in data.items():
         if isinstance(value, Mapping):
             if key not in SECTIONS:
-                raise ValidationError(key, "[table]", f"one of the sections {list(SECTIONS)}")
+                raise ValidationError(key, "[table]", f"one of the sections {list(SECTIONS)}"
+                                                      f"{did_you_mean(key, SECTIONS)}")
         elif key not in TOP_LEVEL_KEYS:
             raise ValidationError(key, value, f"one of the sections {list(SECTIONS)} or a "
-                                              f"top-level key in {list(TOP_LEVEL_KEYS)}")
+                                              f"top-level key in {list(TOP_LEVEL_KEYS)}"
+                                              f"{did_you_mean(key, (*SECTIONS, *TOP_LEVEL_KEYS))}")
     physical = _section(data, "physical")
     _check_physical(None, None, physical)
     phys = physical or {}
@@ -788,7 +840,8 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
     for key in load_table:
         if key not in ("mean_pressure", "penetration"):
             raise ValidationError(f"load.{key}", load_table[key],
-                                  "a key of [load]: 'mean_pressure' or 'penetration'")
+                                  "a key of [load]: 'mean_pressure' or 'penetration'"
+                                  f"{did_you_mean(key, ('mean_pressure', 'penetration'))}")
     targets = physical_targets("load", phys, nu, amplitude=lambda: _amplitude(profile))
     _fill("load", load_table, targets, phys, None, "load")
     if not load_table:
@@ -800,7 +853,8 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
     sliding = _section(data, "sliding") or {}
     for key in sliding:
         if key != "zeta":
-            raise ValidationError(f"sliding.{key}", sliding[key], "a key of [sliding]: 'zeta'")
+            raise ValidationError(f"sliding.{key}", sliding[key], "a key of [sliding]: 'zeta'"
+                                                                  f"{did_you_mean(key, ['zeta'])}")
     _fill("sliding", sliding, physical_targets("sliding", phys, nu), phys, None, "sliding")
     if "zeta" not in sliding:
         if rheology.modulus_ratio != 1.0:

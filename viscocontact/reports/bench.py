@@ -41,6 +41,7 @@ from .._files import write_atomic
 from .._outputs import check_folder
 from ..data import bench_suite
 from ..errors import TimeLimitExceeded, ValidationError
+from ..methods.bem import BEM
 
 BETA = 10.0
 PEER_FILE = "peer_fft.py"
@@ -155,7 +156,7 @@ def bem_run(case: Case, solver: str, elements: int, repeats: int, budget: float)
     from ..problem import ContactProblem, Discretization
 
     prof, rheology, adhesion = case.components()
-    problem = ContactProblem(profile=prof, rheology=rheology, adhesion=adhesion,
+    problem = ContactProblem(method=BEM(), profile=prof, rheology=rheology, adhesion=adhesion,
                              solver=_solver(solver), mean_pressure=case.mean_pressure,
                              zeta=case.zeta, discretization=Discretization(elements=elements))
 

@@ -161,6 +161,10 @@ def _problem(profile, *, rheology=None, solver=None, gamma=None, edge_perturbati
         from ..methods.auto import Auto
 
         extra["method"] = Auto(tolerance=tolerance)
+    else:
+        from ..methods.bem import BEM
+
+        extra["method"] = BEM()
     return ContactProblem(profile=profile, rheology=rheology or Elastic(),
                           solver=solver or Newton(),
                           discretization=discretization or Discretization(), **extra, **kw)
