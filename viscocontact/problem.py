@@ -147,7 +147,7 @@ class ContactProblem:
                                          validator=_component("methods"))
 
     def __attrs_post_init__(self):
-        from .scene import Load
+        from .load import Load
 
         Load(mean_pressure=self.mean_pressure, penetration=self.penetration)  # validates
 

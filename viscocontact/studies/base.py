@@ -86,7 +86,7 @@ def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
     ``cohesive_range``/``cohesive_strength`` for an adhesion that is not a Maugis–Dugdale law
     without its own ``range``) are dropped from the copy; the others stay.
     """
-    from ..scene import COHESIVE_KEYS, COHESIVE_KIND
+    from ..units import COHESIVE_KEYS, COHESIVE_KIND
 
     out = {k: (dict(v) if isinstance(v, Mapping) else v) for k, v in base.items()}
     physical = dict(out.get("physical") or {})
