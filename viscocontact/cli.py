@@ -139,6 +139,9 @@ def _configure_solve(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
     parser.add_argument("--fields", action="store_true",
                         help="include pressure, displacement and gap on the check grid")
+    parser.add_argument("--si", action="store_true",
+                        help="also the result in SI units (m, Pa), from the scene's [physical] "
+                             "table")
     parser.add_argument("--elements", type=int, default=None, help="elements per contact")
     _add_interior_resolution(parser)
     parser.add_argument("--explain", action="store_true",
@@ -172,17 +175,44 @@ def _run_solve(args: argparse.Namespace) -> int:
         plan = problem.plan()
         print(dumps(plan.to_dict(), ensure_ascii=False, indent=2) if args.json else plan)
         return 0
+    if args.si:
+        from .units import require_scale
+
+        require_scale(scene)                # a scene without an SI scale: said before solving
     result = problem.solve(fields=args.fields)
+    si = _si(result, scene) if args.si else None
     if args.json:
-        print(result.to_json(with_fields=args.fields))
+        if si is None:
+            print(result.to_json(with_fields=args.fields))
+        else:
+            from ._json import dumps
+
+            print(dumps({**result.to_dict(with_fields=args.fields), "si": si}))
     else:
         for key, value in result.to_dict().items():
             if key != "edge_terms":
                 print(f"{key:<18} {_format_value(value)}")
+        for key, value in (si or {}).items():
+            print(f"{'si.' + key:<21} {_format_value(value)} {_SI_UNITS[key]}".rstrip())
     if not result.converged:
         print(f"viscocontact solve: not converged: {result.message}", file=sys.stderr)
         return 1
     return 0
+
+
+#: SI units of ``solve --si`` (:class:`~viscocontact.units.PhysicalResult`).
+_SI_UNITS = {"contact_length": "m", "contact_fraction": "", "edges": "m", "penetration": "m",
+             "mean_pressure": "Pa", "tangential_stress": "Pa", "friction": "",
+             "wavelength": "m", "amplitude": "m"}
+
+
+def _si(result, scene) -> dict:
+    """``solve --si``: the result in SI units as plain data."""
+    import attrs
+
+    si = attrs.asdict(result.physical(scene))
+    si["edges"] = si["edges"].tolist()
+    return si
 
 
 # ---- studies: shared options -------------------------------------------------------------------

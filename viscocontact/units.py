@@ -72,18 +72,25 @@ class PhysicalResult:
     amplitude: float
 
 
-def physical_result(result: Any, scene: Any) -> PhysicalResult:
-    """``result`` (a solve of ``scene``) in SI units, from the scene's ``[physical]`` table.
-
-    Raises :class:`ValidationError` naming the ``physical`` key the conversion needs
-    (``physical.wavelength`` for lengths, ``physical.E0`` for pressures) when it is missing.
-    """
+def require_scale(scene: Any) -> Mapping[str, float]:
+    """The scene's ``[physical]`` table if it gives the SI scale of a result (``wavelength``
+    and ``E0``); else a :class:`ValidationError` naming the missing key."""
     phys = scene.physical or {}
     for key, meaning in (("wavelength", "fundamental wavelength λ0, m"),
                          ("E0", "relaxed Young modulus E0, Pa")):
         if key not in phys:
             raise ValidationError(f"physical.{key}", None,
                                   f"a value ({meaning}): needed to read a result in SI units")
+    return phys
+
+
+def physical_result(result: Any, scene: Any) -> PhysicalResult:
+    """``result`` (a solve of ``scene``) in SI units, from the scene's ``[physical]`` table.
+
+    Raises :class:`ValidationError` naming the ``physical`` key the conversion needs
+    (``physical.wavelength`` for lengths, ``physical.E0`` for pressures) when it is missing.
+    """
+    phys = require_scale(scene)
     q0 = 2.0 * math.pi / phys["wavelength"]
     amplitude = float(scene.profile.amplitude)          # Λ̃ = q0·Λ
     pressure_scale = phys["E0"] * amplitude / (2.0 * (1.0 - scene.poisson**2))

@@ -53,3 +53,22 @@ def test_a_dimensionless_scene_has_no_si_view():
                                + "[load]\nmean_pressure = 0.3\n")
     with pytest.raises(vc.ValidationError, match="physical.wavelength"):
         vc.solve(scene).physical(scene)
+
+
+def test_solve_si_prints_the_si_view_or_says_what_is_missing(tmp_path, capsys):
+    import json
+
+    from viscocontact.cli import main
+
+    scene = tmp_path / "si.toml"
+    scene.write_text(SI + "mean_pressure = 1e5\n")
+    assert main(["solve", str(scene), "--si", "--json"]) == 0
+    si = json.loads(capsys.readouterr().out)["si"]
+    assert si["mean_pressure"] == pytest.approx(1e5, rel=1e-9) and si["wavelength"] == 1e-3
+    bare = tmp_path / "bare.toml"
+    bare.write_text(SI.split("[physical]")[0].replace('kind = "sinusoid"',
+                                                      'kind = "sinusoid"\namplitude = 0.05')
+                    + "[load]\nmean_pressure = 0.3\n")
+    assert main(["solve", str(bare), "--si"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == "" and "physical.wavelength" in captured.err
