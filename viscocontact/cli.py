@@ -11,13 +11,12 @@ output piped into a reader that stops early (``| head``) ends quietly with 141.
 from __future__ import annotations
 
 import argparse
-import contextlib
-import os
 import sys
 import tomllib
 import warnings
-from typing import Callable, Iterator, Sequence
+from typing import Callable, Sequence
 
+from ._cli_stops import Interrupted, kept_on_interrupt, quiet_stdout, verbose
 from .errors import ValidationError, ViscoContactError
 
 EXIT_USAGE = 2
@@ -296,7 +295,7 @@ def _run_study_file(args, kind: str, build) -> int:
             raise ValidationError("SCENE.toml", None, "a scene file (or --resume --out FILE.h5 "
                                                       "to continue a study file)")
         out = Path(args.out)
-        with _kept_on_interrupt(kind, out):
+        with kept_on_interrupt(kind, out):
             data = resume(out, **options)
     else:
         from .scene import Scene
@@ -304,7 +303,7 @@ def _run_study_file(args, kind: str, build) -> int:
         scene_path = _path(args.scene)
         study = build(Scene.from_toml(scene_path))
         out = Path(args.out) if args.out else Path(f"{scene_path.stem}_{kind}.h5")
-        with _kept_on_interrupt(kind, out):
+        with kept_on_interrupt(kind, out):
             data = run(study, out, resume=args.resume, overwrite=args.force, **options)
     if data.kind != kind:
         raise ValidationError("--out", str(data.path), f"a {kind} study file (it holds a "
@@ -316,23 +315,6 @@ def _run_study_file(args, kind: str, build) -> int:
         for f in plot_study(data):
             print(f"wrote {f}")
     return 1 if failed else 0
-
-
-class Interrupted(Exception):
-    """Ctrl-C during a command; the message says what is kept (exit code 130)."""
-
-
-@contextlib.contextmanager
-def _kept_on_interrupt(kind: str, out) -> Iterator[None]:
-    """Turn Ctrl-C during a study into :class:`Interrupted` saying what the file keeps and how
-    to go on (each finished point is in the file as soon as it is back)."""
-    try:
-        yield
-    except KeyboardInterrupt:
-        if not out.exists():
-            raise Interrupted(f"interrupted before {out} was written") from None
-        raise Interrupted(f"interrupted: the points finished so far are kept in {out}; go on "
-                          f"with: {_PROG} {kind} --resume --out {out}") from None
 
 
 def _report(data) -> int:
@@ -599,37 +581,6 @@ def _one_line_warning(command: str):
     return show
 
 
-@contextlib.contextmanager
-def _verbose(on: bool) -> Iterator[None]:
-    """``-v``: the package's INFO records (solve events as they happen) on stderr."""
-    if not on:
-        yield
-        return
-    import logging
-
-    log = logging.getLogger("viscocontact")
-    handler = logging.StreamHandler(sys.stderr)
-    handler.setFormatter(logging.Formatter(f"{_PROG}: %(message)s"))
-    level = log.level
-    log.addHandler(handler)
-    log.setLevel(logging.INFO)
-    try:
-        yield
-    finally:
-        log.removeHandler(handler)
-        log.setLevel(level)
-
-
-def _quiet_stdout() -> None:
-    """After a closed pipe: point stdout at the null device, so that the interpreter's final
-    flush of what is left does not fail again (Python's documented idiom for SIGPIPE)."""
-    try:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
-    except (OSError, ValueError, AttributeError):   # no real stdout (captured): nothing to flush
-        pass
-
-
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit code (0 success, 2 bad input)."""
     parser = build_parser()
@@ -638,7 +589,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SystemExit as exc:  # --help, --version, usage errors (argparse already printed)
         return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USAGE
     try:
-        with warnings.catch_warnings(), _verbose(args.verbose):
+        with warnings.catch_warnings(), verbose(args.verbose):
             warnings.showwarning = _one_line_warning(args.command)
             code = args.run(args)
         sys.stdout.flush()      # a closed pipe is found here, not at exit
@@ -650,7 +601,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"{_PROG} {args.command}: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
     except BrokenPipeError:
-        _quiet_stdout()
+        quiet_stdout()
         return EXIT_BROKEN_PIPE
     except ViscoContactError as exc:  # ValidationError, PluginError, StudyFileError
         print(f"viscocontact {args.command}: error: {_one_line(exc)}", file=sys.stderr)
