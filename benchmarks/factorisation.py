@@ -25,7 +25,8 @@ def influence_matrix(n: int, seed: int = 0) -> np.ndarray:
     from viscocontact.solvers import Broyden
 
     kernel = ContactProblem(method=BEM(),
-                            profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+                            profile=Sinusoid(amplitude=0.1),
+                            rheology=StandardLinearSolid(beta=10.0),
                             solver=Broyden(), mean_pressure=0.1, zeta=1e-2).prepare().kernel
     rng = np.random.default_rng(seed)
     nodes = np.sort(rng.uniform(-np.pi, np.pi, n + 1))

@@ -74,7 +74,8 @@ def _run_describe(args: argparse.Namespace) -> int:
 
 def _path(name: str):
     """A file named on the command line; the README's ``examples/scenes/NAME.toml`` is the copy
-    shipped with the package when no such file exists here (:func:`viscocontact.data.scene_path`)."""
+    shipped with the package when no such file exists here
+    (:func:`viscocontact.data.scene_path`)."""
     from .data import scene_path
 
     return scene_path(name)

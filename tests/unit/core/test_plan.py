@@ -172,7 +172,8 @@ def test_residual_scale_lies_between_relaxed_and_glassy_stiffness(beta, log_zeta
 
 def test_plan_reports_the_scaled_tolerance():
     glassy = ContactProblem(method=BEM(),
-                            profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+                            profile=Sinusoid(amplitude=0.1),
+                            rheology=StandardLinearSolid(beta=10.0),
                             solver=Newton(), mean_pressure=0.1, zeta=1e8)
     assert "× 10 (stiffness" in str(glassy.plan())
     relaxed = attrs.evolve(glassy, zeta=0.0)

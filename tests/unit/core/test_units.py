@@ -48,9 +48,9 @@ def test_a_penetration_given_in_metres_is_read_back_and_full_contact_is_one_wave
 
 
 def test_a_dimensionless_scene_has_no_si_view():
-    scene = vc.Scene.from_toml(SI.split("[physical]")[0].replace("kind = \"sinusoid\"",
-                                                                 "kind = \"sinusoid\"\namplitude = 0.05")
-                               + "[load]\nmean_pressure = 0.3\n")
+    bare = SI.split("[physical]")[0].replace('kind = "sinusoid"',
+                                             'kind = "sinusoid"\namplitude = 0.05')
+    scene = vc.Scene.from_toml(bare + "[load]\nmean_pressure = 0.3\n")
     with pytest.raises(vc.ValidationError, match="physical.wavelength"):
         vc.solve(scene).physical(scene)
 

@@ -466,8 +466,8 @@ def test_the_branch_stiffness_of_a_stable_wavy_root_is_johnsons():
     with 256 elements: the mesh) and the central difference of two perturbed solves to 2e-5.
     That bound is the difference's own error at h = 5e-5: each solve stops at
     ``max|r| <= 1e-9``, which leaves its load off by up to ``||∂p̃∞/∂r||₁ · 1e-9`` (0.20 here),
-    so the difference by up to 0.2e-9/h = 4e-6 (1.1e-5 of k), while the truncation h²·|d³p̃∞/dΔ̃³|/6 is
-    below 1e-9 of k. The penetration-controlled state at the same root gives it through
+    so the difference by up to 0.2e-9/h = 4e-6 (1.1e-5 of k), while the truncation
+    h²·|d³p̃∞/dΔ̃³|/6 is below 1e-9 of k. The penetration-controlled state at the same root gives it through
     the other formula, and ``load_stiffness`` takes it without a solve."""
     problem, johnson = _wavy_at_zero_load(0.5)
     path, state = _load_controlled_root(problem)
