@@ -132,3 +132,16 @@ def test_a_pipe_closed_by_its_reader_ends_quietly(tmp_path):
     proc.stdout.close()                           # the reader stops, like head -c 400
     err = proc.stderr.read().decode()
     assert proc.wait() == 141 and err == "", err
+
+
+def test_ctrl_c_during_a_solve_is_one_line(tmp_path, capsys, monkeypatch):
+    from viscocontact.problem import ContactProblem
+
+    def stopped(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(ContactProblem, "solve", stopped)
+    scene = tmp_path / "md.toml"
+    scene.write_text(MD_SI)
+    assert main(["solve", str(scene)]) == 130
+    assert _one_line(capsys) == "viscocontact solve: interrupted"
