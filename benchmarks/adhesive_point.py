@@ -54,11 +54,13 @@ def warm_up() -> float:
     t = time.perf_counter()
     from viscocontact.adhesion import EnergyBalance
     from viscocontact.problem import ContactProblem, Discretization
+    from viscocontact.methods.bem import BEM
     from viscocontact.profiles import Sinusoid
     from viscocontact.rheology import StandardLinearSolid
     from viscocontact.solvers import Broyden
 
-    ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+    ContactProblem(method=BEM(),
+                   profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
                    adhesion=EnergyBalance(gamma=1e-4), solver=Broyden(), mean_pressure=0.1,
                    zeta=1e-3,
                    discretization=Discretization(elements=32)).solve()
@@ -68,12 +70,14 @@ def warm_up() -> float:
 def problem(seed: int, crowded: bool, solver=None):
     from viscocontact.adhesion import EnergyBalance
     from viscocontact.problem import ContactProblem
+    from viscocontact.methods.bem import BEM
     from viscocontact.profiles import SelfAffineProfile
     from viscocontact.rheology import StandardLinearSolid
     from viscocontact.solvers import Broyden
 
     zeta, load = (1e-6, 0.6) if crowded else (1e-2, 0.1)
-    return ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
+    return ContactProblem(method=BEM(),
+                          profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
                           rheology=StandardLinearSolid(beta=10.0),
                           adhesion=EnergyBalance(gamma=2.387e-7), solver=solver or Broyden(),
                           mean_pressure=load, zeta=zeta)

@@ -30,11 +30,13 @@ SAME = 1e-6
 def solve(seed: int, zeta: float, load: float, path_step: float):
     from viscocontact.adhesion import EnergyBalance
     from viscocontact.problem import ContactProblem, Discretization
+    from viscocontact.methods.bem import BEM
     from viscocontact.profiles import SelfAffineProfile
     from viscocontact.rheology import StandardLinearSolid
     from viscocontact.solvers import Broyden
 
-    problem = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
+    problem = ContactProblem(method=BEM(),
+                             profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
                              rheology=StandardLinearSolid(beta=10.0), solver=Broyden(),
                              adhesion=EnergyBalance(gamma=2.387e-7), mean_pressure=load,
                              zeta=zeta, discretization=Discretization(path_step=path_step))

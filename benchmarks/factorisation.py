@@ -19,11 +19,14 @@ import numpy as np
 
 def influence_matrix(n: int, seed: int = 0) -> np.ndarray:
     from viscocontact.problem import ContactProblem
+    from viscocontact.methods.bem import BEM
     from viscocontact.profiles import Sinusoid
     from viscocontact.rheology import StandardLinearSolid
     from viscocontact.solvers import Broyden
 
-    kernel = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+    kernel = ContactProblem(method=BEM(),
+                            profile=Sinusoid(amplitude=0.1),
+                            rheology=StandardLinearSolid(beta=10.0),
                             solver=Broyden(), mean_pressure=0.1, zeta=1e-2).prepare().kernel
     rng = np.random.default_rng(seed)
     nodes = np.sort(rng.uniform(-np.pi, np.pi, n + 1))

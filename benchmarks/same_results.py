@@ -17,6 +17,7 @@ import numpy as np
 def cases():
     from viscocontact.adhesion import EnergyBalance, NoAdhesion
     from viscocontact.problem import ContactProblem, Discretization
+    from viscocontact.methods.bem import BEM
     from viscocontact.profiles import SelfAffineProfile, Sinusoid
     from viscocontact.rheology import Elastic, StandardLinearSolid
     from viscocontact.solvers import Bisection, Broyden, Newton, NonlinearCG
@@ -29,7 +30,7 @@ def cases():
     def P(**kw):
         kw.setdefault("rheology", sls)
         kw.setdefault("solver", Newton())
-        return ContactProblem(**kw)
+        return ContactProblem(method=BEM(), **kw)
 
     return {
         "westergaard": (P(profile=wavy, rheology=Elastic(), mean_pressure=0.3), None),

@@ -36,6 +36,7 @@ from viscocontact.profiles import SelfAffineProfile, Sinusoid  # noqa: E402
 from viscocontact.reference import westergaard_area  # noqa: E402
 from viscocontact.rheology import Elastic, StandardLinearSolid  # noqa: E402
 from viscocontact.solvers import Bisection  # noqa: E402
+from viscocontact.methods.bem import BEM
 
 LOAD = 0.25
 PEER_POINTS = 8192
@@ -49,7 +50,7 @@ def rough(seed: int, scales: int = 50):
 
 
 def problem(profile, rheology, zeta, load=LOAD):
-    return ContactProblem(profile=profile, rheology=rheology, solver=Bisection(),
+    return ContactProblem(method=BEM(), profile=profile, rheology=rheology, solver=Bisection(),
                           mean_pressure=load, zeta=zeta)
 
 

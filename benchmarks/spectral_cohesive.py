@@ -25,10 +25,11 @@ from viscocontact.problem import ContactProblem
 from viscocontact.profiles import Sinusoid
 from viscocontact.rheology import StandardLinearSolid
 from viscocontact.solvers import Broyden
+from viscocontact.methods.bem import BEM
 
 
 def problem(zeta: float, load: float) -> ContactProblem:
-    return ContactProblem(profile=Sinusoid(amplitude=0.1),
+    return ContactProblem(method=BEM(), profile=Sinusoid(amplitude=0.1),
                           rheology=StandardLinearSolid(beta=10.0),
                           adhesion=MaugisDugdale(gamma=1e-4, range=1e-2), solver=Broyden(),
                           mean_pressure=load, zeta=zeta)

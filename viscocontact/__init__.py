@@ -16,8 +16,10 @@ All numerics run in the dimensionless groups of the thesis's eq. 4.17.
 The names below are imported on first use, so ``import viscocontact`` loads neither numpy,
 scipy, matplotlib nor h5py:
 
-* scenes and solves: :class:`Scene`, :func:`solve`, :class:`ContactProblem`,
-  :class:`Discretization`, :class:`Tolerances`, :class:`ContactResult`, :class:`SolveStatus`,
+* scenes and solves: :class:`Scene` (with its :class:`Load`; ``scene.replace(zeta=...)``
+  derives a variant), :func:`solve`, :class:`ContactProblem`,
+  :class:`Discretization`, :class:`Tolerances`, :class:`ContactResult` (``result.physical(scene)``:
+  the :class:`PhysicalResult` in SI units), :class:`SolveStatus`,
   :func:`dimensionless_groups` (a time limit for any block: ``vc.deadline.deadline``);
 * components: profiles :class:`Sinusoid`, :class:`SelfAffineProfile`, :class:`MeasuredProfile`;
   rheologies :class:`Elastic`, :class:`StandardLinearSolid`, :class:`PronySeries`; kernels
@@ -52,10 +54,12 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree
 #: public name -> (module, attribute), imported on first access
 _EXPORTS: dict[str, tuple[str, str]] = {
     "Scene": ("scene", "Scene"),
+    "Load": ("scene", "Load"),
     "ContactProblem": ("problem", "ContactProblem"),
     "Discretization": ("problem", "Discretization"),
     "ContactResult": ("result", "ContactResult"),
     "SolveStatus": ("result", "SolveStatus"),
+    "PhysicalResult": ("units", "PhysicalResult"),
     "Tolerances": ("solvers", "Tolerances"),
     "dimensionless_groups": ("groups", "dimensionless_groups"),
     **{name: ("profiles", name) for name in ("Sinusoid", "SelfAffineProfile", "MeasuredProfile")},
@@ -78,7 +82,7 @@ _EXPORTS: dict[str, tuple[str, str]] = {
 _SUBMODULES = frozenset({
     "adhesion", "contact", "deadline", "errors", "groups", "kernels", "methods", "plan", "plots",
     "problem", "profiles", "reference", "result", "rheology", "scene", "solvers", "studies",
-    "study", "testing", "theories"})
+    "study", "testing", "theories", "units", "defaults", "data"})
 
 __all__ = sorted([*_EXPORTS, "solve", "__version__"])
 

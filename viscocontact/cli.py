@@ -5,6 +5,8 @@ Each subcommand is a pair of small functions registered in :data:`SUBCOMMANDS`:
 input (:class:`ValidationError`, :class:`PluginError`, a foreign or damaged study file, missing
 files, TOML syntax) print one line to stderr and return exit code 2, never a traceback.
 ``sweep`` and ``cycle`` return 1 when some point failed (it is stored with its reason).
+Ctrl-C prints one line (for a study: what its file keeps and how to resume it) and returns 130;
+output piped into a reader that stops early (``| head``) ends quietly with 141.
 """
 from __future__ import annotations
 
@@ -14,9 +16,12 @@ import tomllib
 import warnings
 from typing import Callable, Sequence
 
+from ._cli_stops import Interrupted, kept_on_interrupt, quiet_stdout, verbose
 from .errors import ValidationError, ViscoContactError
 
 EXIT_USAGE = 2
+EXIT_INTERRUPTED = 130      # 128 + SIGINT, as a shell reports a command stopped by Ctrl-C
+EXIT_BROKEN_PIPE = 141      # 128 + SIGPIPE: the reader (``| head``) closed the pipe
 _PROG = "viscocontact"
 
 
@@ -68,9 +73,12 @@ def _run_describe(args: argparse.Namespace) -> int:
 
 
 def _path(name: str):
-    from pathlib import Path
+    """A file named on the command line; the README's ``examples/scenes/NAME.toml`` is the copy
+    shipped with the package when no such file exists here
+    (:func:`viscocontact.data.scene_path`)."""
+    from .data import scene_path
 
-    return Path(name)
+    return scene_path(name)
 
 
 # ---- plugins ------------------------------------------------------------------------------------
@@ -125,9 +133,15 @@ def _interior_resolution(text: str) -> float | None:
 
 def _configure_solve(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("scene", metavar="SCENE.toml", help="scene file")
+    parser.add_argument("-v", "--verbose", action="store_true", default=argparse.SUPPRESS,
+                        help="log each event of the solve (contacts born, merged, refined; "
+                             "grids) to stderr as it happens, with the seconds since it began")
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
     parser.add_argument("--fields", action="store_true",
                         help="include pressure, displacement and gap on the check grid")
+    parser.add_argument("--si", action="store_true",
+                        help="also the result in SI units (m, Pa), from the scene's [physical] "
+                             "table")
     parser.add_argument("--elements", type=int, default=None, help="elements per contact")
     _add_interior_resolution(parser)
     parser.add_argument("--explain", action="store_true",
@@ -161,17 +175,44 @@ def _run_solve(args: argparse.Namespace) -> int:
         plan = problem.plan()
         print(dumps(plan.to_dict(), ensure_ascii=False, indent=2) if args.json else plan)
         return 0
+    if args.si:
+        from .units import require_scale
+
+        require_scale(scene)                # a scene without an SI scale: said before solving
     result = problem.solve(fields=args.fields)
+    si = _si(result, scene) if args.si else None
     if args.json:
-        print(result.to_json(with_fields=args.fields))
+        if si is None:
+            print(result.to_json(with_fields=args.fields))
+        else:
+            from ._json import dumps
+
+            print(dumps({**result.to_dict(with_fields=args.fields), "si": si}))
     else:
         for key, value in result.to_dict().items():
             if key != "edge_terms":
                 print(f"{key:<18} {_format_value(value)}")
+        for key, value in (si or {}).items():
+            print(f"{'si.' + key:<21} {_format_value(value)} {_SI_UNITS[key]}".rstrip())
     if not result.converged:
         print(f"viscocontact solve: not converged: {result.message}", file=sys.stderr)
         return 1
     return 0
+
+
+#: SI units of ``solve --si`` (:class:`~viscocontact.units.PhysicalResult`).
+_SI_UNITS = {"contact_length": "m", "contact_fraction": "", "edges": "m", "penetration": "m",
+             "mean_pressure": "Pa", "tangential_stress": "Pa", "friction": "",
+             "wavelength": "m", "amplitude": "m"}
+
+
+def _si(result, scene) -> dict:
+    """``solve --si``: the result in SI units as plain data."""
+    import attrs
+
+    si = attrs.asdict(result.physical(scene))
+    si["edges"] = si["edges"].tolist()
+    return si
 
 
 # ---- studies: shared options -------------------------------------------------------------------
@@ -254,14 +295,17 @@ def _run_study_file(args, kind: str, build) -> int:
         if not (args.resume and args.out):
             raise ValidationError("SCENE.toml", None, "a scene file (or --resume --out FILE.h5 "
                                                       "to continue a study file)")
-        data = resume(Path(args.out), **options)
+        out = Path(args.out)
+        with kept_on_interrupt(kind, out):
+            data = resume(out, **options)
     else:
         from .scene import Scene
 
         scene_path = _path(args.scene)
         study = build(Scene.from_toml(scene_path))
         out = Path(args.out) if args.out else Path(f"{scene_path.stem}_{kind}.h5")
-        data = run(study, out, resume=args.resume, overwrite=args.force, **options)
+        with kept_on_interrupt(kind, out):
+            data = run(study, out, resume=args.resume, overwrite=args.force, **options)
     if data.kind != kind:
         raise ValidationError("--out", str(data.path), f"a {kind} study file (it holds a "
                                                        f"{data.kind})")
@@ -440,15 +484,10 @@ def _run_plot(args: argparse.Namespace) -> int:
 
 
 def _check_folder(option: str, name: str, what: str) -> None:
-    """A folder to write into (made if missing) must not be a file, nor lie below one."""
-    from pathlib import Path
+    """A folder to write into (made if missing): not a file nor below one, and writable."""
+    from ._outputs import check_folder
 
-    path = Path(name)
-    for folder in (path, *path.parents):
-        if folder.exists():
-            if not folder.is_dir():
-                raise ValidationError(option, name, f"{what} ({folder} is a file)")
-            return
+    check_folder(option, name, what)
 
 
 # ---- study --------------------------------------------------------------------------------------
@@ -517,6 +556,8 @@ def build_parser() -> argparse.ArgumentParser:
         description="Adhesive viscoelastic rough sliding contact "
                     "(dimensionless groups of the thesis's eq. 4.17).")
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument("-v", "--verbose", action="store_true",
+                        help="log what a solve does as it happens (to stderr)")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name, (configure, run) in SUBCOMMANDS.items():
         help_text = (run.__doc__ or "").strip().splitlines()[0] if run.__doc__ else None
@@ -547,9 +588,20 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SystemExit as exc:  # --help, --version, usage errors (argparse already printed)
         return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USAGE
     try:
-        with warnings.catch_warnings():
+        with warnings.catch_warnings(), verbose(args.verbose):
             warnings.showwarning = _one_line_warning(args.command)
-            return args.run(args)
+            code = args.run(args)
+        sys.stdout.flush()      # a closed pipe is found here, not at exit
+        return code
+    except Interrupted as exc:
+        print(f"{_PROG} {args.command}: {exc}", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except KeyboardInterrupt:
+        print(f"{_PROG} {args.command}: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except BrokenPipeError:
+        quiet_stdout()
+        return EXIT_BROKEN_PIPE
     except ViscoContactError as exc:  # ValidationError, PluginError, StudyFileError
         print(f"viscocontact {args.command}: error: {_one_line(exc)}", file=sys.stderr)
     except tomllib.TOMLDecodeError as exc:

@@ -13,6 +13,7 @@ Layouts of the thesis's figures for the ``examples/fig_4_*.py`` scripts: :func:`
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
@@ -26,6 +27,59 @@ def _figure(**options):
     from matplotlib.figure import Figure
 
     return Figure(**options)
+
+
+class _Figures:
+    """The two calls of :mod:`matplotlib.pyplot` that report generators make, on figures of
+    :func:`_figure`: no backend is selected or switched, and there is nothing to close."""
+
+    @staticmethod
+    def subplots(nrows: int = 1, ncols: int = 1, *, figsize=None, constrained_layout=False,
+                 **options):
+        fig = _figure(figsize=figsize, constrained_layout=constrained_layout)
+        return fig, fig.subplots(nrows, ncols, **options)
+
+    @staticmethod
+    def close(fig) -> None:
+        """Nothing to do: the figure is no part of pyplot's state."""
+
+    @property
+    def rcParams(self):
+        import matplotlib
+
+        return matplotlib.rcParams
+
+
+#: ``plt``-like drawing for library code (the report generators).
+pyplot_free = _Figures()
+
+
+#: The y label of the contact length: Ã = q0·(length in contact), 2π when the contact is full.
+AREA_LABEL = "contact length Ã (2π: full contact)"
+
+
+def scene_label(scene) -> str:
+    """A one-line description of a scene for a figure: ``β``, the load, ``Γ̃`` when adhesive."""
+    from .groups import dimensionless_groups
+
+    g = dimensionless_groups(scene)
+    load = (f"p̃∞ = {g['mean_pressure']:.3g}" if "mean_pressure" in g
+            else f"Δ̃ = {g['penetration']:.3g}")
+    parts = [f"{g['profile']}", f"β = {g['beta']:.3g}", load]
+    if g["gamma"] > 0:
+        parts.append(f"Γ̃ = {g['Gamma']:.3g}")
+    return ", ".join(parts)
+
+
+def _study_title(data, extra: str = "") -> str:
+    """The scene of a study file (its name, β, load, Γ̃), then ``extra``."""
+    name = data.path.stem if getattr(data, "path", None) is not None else ""
+    try:
+        text = scene_label(data.scene)
+    except Exception:       # a scene whose plugin is missing here: its file name is enough
+        text = ""
+    head = " — ".join(t for t in (name, text) if t)
+    return "\n".join(t for t in (head, extra) if t)
 
 
 def _colors() -> list:
@@ -86,7 +140,7 @@ def plot_sweep(data, out: Path, prefix: str) -> list[Path]:
     control = "p̃∞" if data.study.control == "mean_pressure" else "Δ̃"
     realizations = len(axes["seed"]) > 1
     files = []
-    for key, ylabel, name in (("area", "contact area Ã", "area"),
+    for key, ylabel, name in (("area", AREA_LABEL, "area"),
                               ("reduced_friction", "reduced friction μ/√m2", "friction")):
         band = data.band(key)
         fig = _figure(figsize=(6.4, 4.2))
@@ -105,9 +159,9 @@ def plot_sweep(data, out: Path, prefix: str) -> list[Path]:
         _xscale(ax, zetas)
         ax.set_xlabel(ZETA_LABEL)
         ax.set_ylabel(ylabel)
-        if realizations:
-            ax.set_title(f"mean of {len(axes['seed'])} realizations, "
-                         f"{100 * band.confidence:.0f}% confidence band")
+        band_note = (f"mean of {len(axes['seed'])} realizations, "
+                     f"{100 * band.confidence:.0f}% confidence band" if realizations else "")
+        ax.set_title(_study_title(data, band_note), fontsize=9)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
         files.append(_save(fig, out / f"{prefix}_{name}.png", dpi=120))
@@ -146,13 +200,13 @@ def plot_cycle(data, out: Path, prefix: str) -> list[Path]:
         if m is not None and m.detached:
             ax_p.plot([m.detachment_penetration], [_pressure_at(pts, m.detachment_penetration)],
                       "x", color=color, ms=8)
-    for ax, ylabel in ((ax_p, "mean pressure p̃∞"), (ax_a, "contact area Ã")):
+    for ax, ylabel in ((ax_p, "mean pressure p̃∞"), (ax_a, AREA_LABEL)):
         ax.set_xlabel("penetration Δ̃")
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
     ax_p.axhline(0.0, color="k", lw=0.5)
     ax_p.legend(fontsize=8)
-    fig.suptitle("approach (solid) and retraction (dashed)", fontsize=10)
+    fig.suptitle(_study_title(data, "approach (solid) and retraction (dashed)"), fontsize=10)
     files = [_save(fig, out / f"{prefix}_cycle.png", dpi=120)]
 
     metrics = data.metrics()
@@ -373,22 +427,34 @@ def plot_toughness(curves, path, *, title: str | None = None) -> Path:
     return _save(fig, path)
 
 
-def plot_solution_fields(solutions, path, *, title: str | None = None) -> Path:
+def plot_solution_fields(solutions, path, *, title: str | None = None, scene=None) -> Path:
     """Pressure and gap of single solutions against x̃ (two stacked panels).
 
     Parameters
     ----------
-    solutions : sequence of dict
+    solutions : ContactResult, or sequence of ContactResult or dict
+        Results solved with ``fields=True`` (labelled with their Ã, p̃∞ and ζ), or dicts with
         ``fields`` (a mapping with ``x``, ``pressure`` and ``gap`` arrays, as
         ``ContactResult.fields`` or ``StudyData.fields(row)``), ``label`` and optionally
         ``style`` (a matplotlib format string).
     path : str or Path
     title : str, optional
+        Default: the scene's description (:func:`scene_label`) when ``scene`` is given.
+    scene : Scene, optional
+        The scene the solutions solve.
 
     Returns
     -------
     Path
     """
+    from .result import ContactResult
+
+    if isinstance(solutions, (ContactResult, Mapping)):
+        solutions = [solutions]
+    solutions = [_as_solution(s, i) if isinstance(s, ContactResult) else s
+                 for i, s in enumerate(solutions)]
+    if title is None and scene is not None:
+        title = scene_label(scene)
     fig = _figure(figsize=(7.0, 5.6))
     ax_p, ax_g = fig.subplots(2, 1, sharex=True)
     for sol in solutions:
@@ -406,3 +472,15 @@ def plot_solution_fields(solutions, path, *, title: str | None = None) -> Path:
     if title:
         ax_p.set_title(title, fontsize=10)
     return _save(fig, path)
+
+
+def _as_solution(result, index: int) -> dict:
+    """The ``{"fields", "label"}`` of a :class:`~viscocontact.result.ContactResult`."""
+    from .errors import ValidationError
+
+    if result.fields is None:
+        raise ValidationError(f"solutions[{index}]", result,
+                              "a result solved with fields=True (vc.solve(scene, fields=True))")
+    label = (f"Ã = {result.area:.4g} (2π: full), p̃∞ = {result.mean_pressure:.3g}, "
+             f"ζ = {result.zeta:.3g}")
+    return {"fields": result.fields, "label": label}

@@ -11,11 +11,12 @@ approach path from first touch when no contact set is given.
 """
 from __future__ import annotations
 
-import logging
+from collections.abc import Mapping
 from typing import Any
 
 import attrs
 
+from . import _events
 from ._validation import in_range, int_range
 from .adhesion.base import AdhesionModel
 from .adhesion.none import NoAdhesion
@@ -30,6 +31,39 @@ from .solvers.bisection import Bisection
 
 __all__ = ["ContactProblem", "Discretization", "Prepared", "solve", "mesh_spec",
            "residual_scale", "INTERIOR_CAP", "SMALLEST_RESOLVED"]
+
+
+def _component(kind: str):
+    """Validator of a component field: an instance of the kind's base class, or an object with
+    the base's abstract methods (a duck-typed component); a registered name, a mapping or
+    anything else is a :class:`~viscocontact.errors.ValidationError` naming the field."""
+    def check(inst, attribute, value):
+        from ._registry import _base
+        from .errors import ValidationError
+
+        base = _base(kind)()
+        if isinstance(value, base) or (
+                not isinstance(value, (str, bytes, Mapping)) and value is not None
+                and all(hasattr(value, m) for m in getattr(base, "__abstractmethods__", ()))):
+            return
+        hint = _name_hint(kind, value) if isinstance(value, str) else ""
+        raise ValidationError(f"ContactProblem.{attribute.name}", value,
+                              f"an instance of {base.__module__}.{base.__qualname__}{hint}")
+    return check
+
+
+def _name_hint(kind: str, name: str) -> str:
+    """What to pass instead of a registered name: the object it names."""
+    from ._registry import REGISTRIES
+    from .errors import PluginError
+
+    try:
+        cls = REGISTRIES[kind].get(name)
+    except PluginError:
+        return (f" (names such as {name!r} are for scene files; the registered {kind} are "
+                f"{REGISTRIES[kind].names()})")
+    return (f" (the name {name!r} is for scene files: pass the object, "
+            f"{cls.__module__}.{cls.__qualname__}(...))")
 
 
 @attrs.frozen(kw_only=True, eq=False)
@@ -47,9 +81,13 @@ class ContactProblem:
 
     Parameters
     ----------
-    profile, rheology, kernel, adhesion, solver
-        The components (``kernel`` default half-plane, ``adhesion`` default none, ``solver``
-        required).
+    profile, rheology : Profile, Rheology
+        The rigid profile and the solid (component objects, e.g. ``Sinusoid(amplitude=0.1)``,
+        ``StandardLinearSolid(beta=10.0)``; a registered name is for scene files).
+    kernel, adhesion, solver : optional
+        Default the half-plane, no adhesion, and the solver :mod:`viscocontact.defaults` picks
+        (Broyden for an adhesive problem, bisection otherwise): the defaults of a
+        :class:`~viscocontact.scene.Scene`.
     mean_pressure, penetration : float
         Exactly one: load control (p̃∞) or penetration control (Δ̃).
     zeta : float
@@ -73,15 +111,28 @@ class ContactProblem:
         next contact), where Newton-type steps stall; once it has brought ``max|r|`` a
         hundredfold below its largest, it finishes with Newton steps (``newton_below``).
     method : SolutionMethod
-        How the equilibrium is computed (default: the boundary-element method,
-        :class:`~viscocontact.methods.bem.BEM`).
+        How the equilibrium is computed (default ``"auto"``, as a scene's: the spectral method
+        for an adhesionless problem, the boundary-element method,
+        :class:`~viscocontact.methods.bem.BEM`, for an adhesive one).
+
+    Examples
+    --------
+    >>> from viscocontact import ContactProblem, Sinusoid, StandardLinearSolid
+    >>> problem = ContactProblem(profile=Sinusoid(amplitude=0.1),
+    ...                          rheology=StandardLinearSolid(beta=10.0), mean_pressure=0.3,
+    ...                          zeta=1.0)
+    >>> problem.method.name, type(problem.solver).__name__
+    ('auto', 'Bisection')
     """
 
-    profile: Any                # duck-typed components: anything with the base's methods
-    rheology: Any
-    solver: NonlinearSolver
-    kernel: Any = attrs.field(factory=HalfPlane)
-    adhesion: AdhesionModel = attrs.field(factory=NoAdhesion)
+    # duck-typed components: an instance of the kind's base, or anything with its methods
+    profile: Any = attrs.field(validator=_component("profiles"))
+    rheology: Any = attrs.field(validator=_component("rheologies"))
+    kernel: Any = attrs.field(factory=HalfPlane, validator=_component("kernels"))
+    adhesion: AdhesionModel = attrs.field(factory=NoAdhesion, validator=_component("adhesion"))
+    solver: NonlinearSolver = attrs.field(
+        default=attrs.Factory(lambda self: _default_solver(self.adhesion), takes_self=True),
+        validator=_component("solvers"))
     mean_pressure: float | None = None
     penetration: float | None = None
     zeta: float = attrs.field(default=0.0, validator=in_range(0.0))
@@ -93,12 +144,10 @@ class ContactProblem:
     fallback: NonlinearSolver | None = attrs.field(
         factory=lambda: Bisection(initial_step=2e-3, growth=1.5, newton_below=1e-2))
     method: SolutionMethod = attrs.field(factory=lambda: _default_method(),
-                                         # attrs' instance_of is typed for concrete classes
-                                         validator=attrs.validators.instance_of(
-                                             SolutionMethod))  # type: ignore[type-abstract]
+                                         validator=_component("methods"))
 
     def __attrs_post_init__(self):
-        from .scene import Load
+        from .load import Load
 
         Load(mean_pressure=self.mean_pressure, penetration=self.penetration)  # validates
 
@@ -166,24 +215,27 @@ class ContactProblem:
 
 
 #: Solver events (contact births, merges, refinements, the method chosen) are logged here at
-#: INFO, one record per event after each solve; a solve that does not converge logs a WARNING.
-logger = logging.getLogger("viscocontact.solve")
+#: INFO as they happen (:mod:`viscocontact._events`); a solve that does not converge logs a
+#: WARNING when it ends.
+logger = _events.logger
 
 
 def _log(result: ContactResult) -> None:
-    if logger.isEnabledFor(logging.INFO):
-        method = result.method or "unknown method"
-        for event in result.extras.get("events", ()):
-            logger.info("%s: %s", method, event)
     if not result.converged:
         logger.warning("%s: %s (%s)", result.method or "solve", result.status.value,
                        result.message)
 
 
 def _default_method() -> SolutionMethod:
-    from .methods.bem import BEM
+    from .defaults import METHOD, build
 
-    return BEM()
+    return build("methods", METHOD)
+
+
+def _default_solver(adhesion) -> NonlinearSolver:
+    from .defaults import build, solver_name
+
+    return build("solvers", solver_name(not isinstance(adhesion, NoAdhesion)))
 
 
 def solve(scene, **options) -> ContactResult:

@@ -2,10 +2,13 @@
 from __future__ import annotations
 
 import enum
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import attrs
 import numpy as np
+
+if TYPE_CHECKING:
+    from .units import PhysicalResult
 
 
 class SolveStatus(enum.Enum):
@@ -91,6 +94,14 @@ class ContactResult:
         """The method's estimate of the relative discretisation error of Ã and μ
         (``extras["error_estimate"]``; NaN when the method gives none)."""
         return float(self.extras.get("error_estimate", float("nan")))
+
+    def physical(self, scene) -> "PhysicalResult":
+        """This result of ``scene`` in SI units (contact length, edges and penetration in m,
+        pressures in Pa), from the scene's ``[physical]`` table
+        (:func:`~viscocontact.units.physical_result`)."""
+        from .units import physical_result
+
+        return physical_result(self, scene)
 
     def to_dict(self, *, with_fields: bool = False) -> dict:
         """The result as plain Python data (the keys of ``viscocontact solve --json``).

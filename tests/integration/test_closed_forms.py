@@ -8,6 +8,7 @@ from viscocontact.profiles import Sinusoid
 from viscocontact.reference import JohnsonWavy, westergaard_area, westergaard_penetration
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Newton
+from viscocontact.methods.bem import BEM
 
 LAM = 0.1   # Λ̃; results in eq. 4.17 units do not depend on it except through Γ̃ = γ̃/Λ̃²
 
@@ -16,7 +17,7 @@ def _solve(**kw):
     kw.setdefault("profile", Sinusoid(amplitude=LAM))
     kw.setdefault("rheology", Elastic())
     kw.setdefault("solver", Newton())
-    return ContactProblem(**kw).solve()
+    return ContactProblem(method=BEM(), **kw).solve()
 
 
 @pytest.mark.parametrize("p", [0.05, 0.3, 0.7])

@@ -28,14 +28,15 @@ def test_edge_elements_resolve_the_relaxation_length_of_a_stiff_solid():
     prep = STIFF.prepare()
     assert prep.kernel.relaxation_lengths() == pytest.approx([1e-4], rel=1e-12)
     assert mesh_spec(Discretization(), prep.kernel, NoAdhesion()).smallest == pytest.approx(1e-4)
-    soft = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+    soft = ContactProblem(method=BEM(),
+                          profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
                           solver=Newton(), mean_pressure=0.3, zeta=0.1).prepare()
     assert mesh_spec(Discretization(), soft.kernel, NoAdhesion()).smallest == 0.1 * 0.1
 
 
 def _edge_element(beta: float, zeta: float, advance: float) -> float | None:
     """The edge element of the default mesh of an adhesive sinusoid on a standard linear solid."""
-    problem = ContactProblem(profile=Sinusoid(amplitude=0.1),
+    problem = ContactProblem(method=BEM(), profile=Sinusoid(amplitude=0.1),
                              rheology=StandardLinearSolid(beta=beta), solver=Broyden(),
                              adhesion=EnergyBalance(gamma=1e-4, edge_perturbation=advance),
                              mean_pressure=0.1, zeta=zeta)
@@ -70,7 +71,7 @@ def test_an_unresolved_thin_memory_layer_leaves_the_answer_within_the_mesh_error
     error in Ã is 6e-4 (``docs/edges.md``)."""
     import viscocontact.methods.bem.meshing as meshing
 
-    problem = ContactProblem(profile=Sinusoid(amplitude=0.1),
+    problem = ContactProblem(method=BEM(), profile=Sinusoid(amplitude=0.1),
                              rheology=StandardLinearSolid(beta=10.0), solver=Broyden(),
                              adhesion=EnergyBalance(gamma=1e-4), mean_pressure=0.1, zeta=zeta)
     default = problem.solve()
@@ -103,7 +104,7 @@ def test_a_load_above_the_branch_maximum_closes_the_contact():
     penetration fold near Δ̃ = 0.883, past which no single contact is steady: the snap found
     nothing and the solve ended "not converged". Under the target load every contact has an edge
     that advances; finished in load control from the fold, the contact closes."""
-    problem = ContactProblem(profile=Sinusoid(amplitude=0.05),
+    problem = ContactProblem(method=BEM(), profile=Sinusoid(amplitude=0.05),
                              rheology=StandardLinearSolid(beta=10.0),
                              adhesion=EnergyBalance(gamma=5e-5, edge_perturbation=0.0),
                              solver=Broyden(), mean_pressure=0.3, zeta=1.0)

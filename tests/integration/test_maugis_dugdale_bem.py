@@ -10,6 +10,7 @@ from viscocontact.adhesion import MaugisDugdale
 from viscocontact.reference.johnson import JohnsonWavy
 from viscocontact.reference.maugis_dugdale import MaugisDugdaleWavy
 from viscocontact.reference.westergaard import westergaard_area
+from viscocontact.methods.bem import BEM
 
 AMP, GAMMA = 0.1, 0.05          # Λ̃ and Γ̃ = γ̃/Λ̃²
 
@@ -17,7 +18,8 @@ AMP, GAMMA = 0.1, 0.05          # Λ̃ and Γ̃ = γ̃/Λ̃²
 def _solve(lam, p, **disc):
     ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=lam)
     model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
-    prob = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=Elastic(), adhesion=model,
+    prob = ContactProblem(method=BEM(),
+                          profile=Sinusoid(amplitude=AMP), rheology=Elastic(), adhesion=model,
                           mean_pressure=p, solver=Newton(),
                           discretization=Discretization(**disc))
     return ref, prob.solve()
@@ -70,7 +72,7 @@ def test_the_pull_off_is_the_wavy_solutions(lam):
     model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
 
     def solve(initial=None, **control):
-        return ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=Elastic(),
+        return ContactProblem(method=BEM(), profile=Sinusoid(amplitude=AMP), rheology=Elastic(),
                               adhesion=model, solver=Newton(), **control).solve(initial=initial)
 
     r = solve(mean_pressure=0.95 * off.mean_pressure)
@@ -89,7 +91,8 @@ def test_short_range_limit_is_johnson():
     errs = []
     for eta in (0.02, 0.01):
         model = MaugisDugdale(gamma=GAMMA * AMP**2, range=eta * AMP)
-        r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=Elastic(), adhesion=model,
+        r = ContactProblem(method=BEM(),
+                           profile=Sinusoid(amplitude=AMP), rheology=Elastic(), adhesion=model,
                            mean_pressure=0.0, solver=Newton()).solve()
         assert r.converged
         errs.append(abs(r.area - johnson))
@@ -113,9 +116,9 @@ def test_a_neck_within_the_range_fills_and_is_the_adhesionless_solution_under_mo
     kw = dict(profile=Sinusoid(amplitude=AMP), rheology=rheology, solver=Newton())
     if zeta is not None:
         kw["zeta"] = zeta
-    r = ContactProblem(adhesion=model, mean_pressure=0.3, **kw).solve()
+    r = ContactProblem(method=BEM(), adhesion=model, mean_pressure=0.3, **kw).solve()
     assert r.converged, r.message
-    ref = ContactProblem(mean_pressure=0.3 + extra, **kw).solve()
+    ref = ContactProblem(method=BEM(), mean_pressure=0.3 + extra, **kw).solve()
     assert abs(r.area / ref.area - 1) < 2e-4
     assert r.friction * 0.3 == pytest.approx(ref.friction * (0.3 + extra), rel=1e-6)
     if zeta is None:
@@ -146,7 +149,8 @@ def test_weak_adhesion_is_the_reference_wavy_solution(Gamma):
     iteration, started without zones, never left zero; 2 s), Γ̃ = 1e-3 once the approach
     overshot the target load to edges without zone lengths at it (16 s)."""
     model = MaugisDugdale(gamma=Gamma * AMP**2, range=0.2 * AMP)
-    r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=Elastic(), adhesion=model,
+    r = ContactProblem(method=BEM(),
+                       profile=Sinusoid(amplitude=AMP), rheology=Elastic(), adhesion=model,
                        mean_pressure=0.3, solver=Newton()).solve()
     assert r.converged, r.message
     ref = MaugisDugdaleWavy(Gamma=Gamma, h0=0.2, modulus_ratio=1.0).state_at_pressure(0.3)
@@ -162,7 +166,8 @@ def test_viscoelastic_limits_are_the_elastic_solutions(zeta, beta_ref):
     instantaneous one (modulus ratio 10); measured -1.8e-5 and -4.4e-5 in Ã."""
     ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=5.0)
     model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
-    r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
+    r = ContactProblem(method=BEM(),
+                       profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
                        adhesion=model, mean_pressure=0.05, zeta=zeta, solver=Newton()).solve()
     exact = MaugisDugdaleWavy(Gamma=GAMMA, h0=ref.h0, modulus_ratio=beta_ref)
     assert r.converged, r.message
@@ -173,7 +178,8 @@ def test_viscoelastic_limits_are_the_elastic_solutions(zeta, beta_ref):
 def _viscoelastic(zeta, p, lam=5.0, **disc):
     ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=lam)
     model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
-    prob = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
+    prob = ContactProblem(method=BEM(),
+                          profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
                           adhesion=model, mean_pressure=p, solver=Newton(), zeta=zeta,
                           discretization=Discretization(**disc))
     prep = prob.prepare()
@@ -247,7 +253,8 @@ def test_edge_zones_follow_the_moving_dugdale_crack_when_slow():
 
     ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=10.0)
     model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
-    r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
+    r = ContactProblem(method=BEM(),
+                       profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
                        adhesion=model, mean_pressure=0.05, solver=Newton(), zeta=1e-3).solve()
     assert r.converged, r.message
     elastic = ref.state_at_pressure(0.05).zone_width / model.quasi_static_zone     # 0.99089
@@ -269,7 +276,8 @@ def test_the_trailing_toughness_rises_to_beta_as_the_moving_dugdale_crack(zeta):
     gamma = 0.005
     ref = MaugisDugdaleWavy.from_transition(Gamma=gamma, transition=100.0)
     model = MaugisDugdale(gamma=gamma * AMP**2, range=ref.h0 * AMP)
-    r = ContactProblem(profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
+    r = ContactProblem(method=BEM(),
+                       profile=Sinusoid(amplitude=AMP), rheology=StandardLinearSolid(beta=10.0),
                        adhesion=model, mean_pressure=0.05, solver=Newton(), zeta=zeta).solve()
     assert r.converged and not r.full_contact, r.message
     elastic = ref.state_at_pressure(0.05).zone_width / model.quasi_static_zone

@@ -8,13 +8,15 @@ from viscocontact.problem import ContactProblem, Discretization
 from viscocontact.profiles import SelfAffineProfile
 from viscocontact.rheology import StandardLinearSolid
 from viscocontact.solvers import Newton
+from viscocontact.methods.bem import BEM
 
 SLS = StandardLinearSolid(beta=10.0)
 COARSE = Discretization(elements=32)
 
 
 def _problem(seed, **kw):
-    return ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
+    return ContactProblem(method=BEM(),
+                          profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
                           rheology=SLS, solver=Newton(), discretization=COARSE, **kw)
 
 

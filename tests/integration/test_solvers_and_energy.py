@@ -17,6 +17,7 @@ from viscocontact.profiles import Sinusoid
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Bisection, Broyden, Newton, NonlinearCG
 from viscocontact.testing.fourier import dissipated_power
+from viscocontact.methods.bem import BEM
 
 LAM = 0.1
 SLS = StandardLinearSolid(beta=10.0)
@@ -24,7 +25,7 @@ SLS = StandardLinearSolid(beta=10.0)
 
 def _problem(solver, **kw):
     kw.setdefault("rheology", SLS)
-    return ContactProblem(profile=Sinusoid(amplitude=LAM), solver=solver, **kw)
+    return ContactProblem(method=BEM(), profile=Sinusoid(amplitude=LAM), solver=solver, **kw)
 
 
 def test_all_solvers_reach_the_same_adhesionless_equilibrium():
@@ -162,7 +163,8 @@ def test_the_default_fallback_finishes_with_newton_on_the_march_s_equilibrium():
     from viscocontact.methods.bem.meshing import Discretization
     from viscocontact.profiles import SelfAffineProfile
 
-    scene = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
+    scene = ContactProblem(method=BEM(),
+                           profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
                            rheology=SLS, adhesion=EnergyBalance(gamma=2.387e-7),
                            solver=NonlinearCG(), mean_pressure=0.2, zeta=0.1,
                            discretization=Discretization(elements=32))

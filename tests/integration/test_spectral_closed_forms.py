@@ -13,13 +13,14 @@ from viscocontact.profiles import SelfAffineProfile, Sinusoid
 from viscocontact.reference import westergaard_area, westergaard_penetration
 from viscocontact.rheology import Elastic, PronySeries, StandardLinearSolid
 from viscocontact.solvers import Broyden
+from viscocontact.methods.bem import BEM
 
 TOL = Spectral().tolerance
 SLS = StandardLinearSolid(beta=10.0)
 
 
 def _problem(profile=None, rheology=None, zeta=0.0, kernel=None, **load):
-    return ContactProblem(profile=profile or Sinusoid(amplitude=0.1),
+    return ContactProblem(method=BEM(), profile=profile or Sinusoid(amplitude=0.1),
                           rheology=rheology or Elastic(), solver=Broyden(),
                           kernel=kernel or HalfPlane(), zeta=zeta, **load)
 

@@ -32,6 +32,7 @@ from viscocontact.reference import JohnsonWavy, westergaard_area, westergaard_pr
 from viscocontact.result import SolveStatus
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Newton
+from viscocontact.methods.bem import BEM
 
 TWO_PI = 2.0 * np.pi
 LAM = 0.1                       # Λ̃ of the sinusoid; Γ̃ = γ̃/Λ̃²
@@ -113,7 +114,7 @@ def _wavy(**kw) -> ContactProblem:
     kw.setdefault("profile", Sinusoid(amplitude=LAM))
     kw.setdefault("rheology", Elastic())
     kw.setdefault("solver", Newton())
-    return ContactProblem(**kw)
+    return ContactProblem(method=BEM(), **kw)
 
 
 def _adhesion(Gamma: float):
@@ -246,7 +247,7 @@ ROUGH = SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=0)
 
 
 def _rough(**kw) -> ContactProblem:
-    return ContactProblem(profile=ROUGH, rheology=Elastic(), solver=Newton(),
+    return ContactProblem(method=BEM(), profile=ROUGH, rheology=Elastic(), solver=Newton(),
                           discretization=Discretization(elements=32), **kw)
 
 
@@ -346,7 +347,7 @@ def _comb(K: int = 128, base: float = 5e-4) -> MeasuredProfile:
 def test_more_than_100_contacts():
     """121 contacts at p̃∞ = 0.1, 8 elements per contact (about 15 s). The check grid must resolve
     a newborn contact (a fraction of the 0.05 peak spacing): 16384 points."""
-    r = _solve(ContactProblem(profile=_comb(), rheology=Elastic(), solver=Newton(),
+    r = _solve(ContactProblem(method=BEM(), profile=_comb(), rheology=Elastic(), solver=Newton(),
                               mean_pressure=0.1,
                               discretization=Discretization(elements=8, check_points=16384)))
     assert r.converged, r.message
@@ -360,7 +361,8 @@ def test_narrow_births_do_not_depend_on_the_check_grid():
     a single contact with a positive gap) the solve finds the same 96 contacts at p̃∞ = 0.05 as
     with 16384, and the same area."""
     def solve(points):
-        return _solve(ContactProblem(profile=_comb(), rheology=Elastic(), solver=Newton(),
+        return _solve(ContactProblem(method=BEM(),
+                                     profile=_comb(), rheology=Elastic(), solver=Newton(),
                                      mean_pressure=0.05,
                                      discretization=Discretization(elements=8,
                                                                    check_points=points)))
@@ -390,7 +392,8 @@ def _twin_peaks() -> MeasuredProfile:
 def test_close_contacts_merge_along_a_load_path(rheology, zeta, adhesion):
     """Penetration stepped up, each step continued from the previous result: two contacts form
     on the twin peaks and merge (or, sliding viscoelastically, the shadowed one detaches)."""
-    prob = ContactProblem(profile=_twin_peaks(), rheology=rheology, solver=Newton(), zeta=zeta,
+    prob = ContactProblem(method=BEM(),
+                          profile=_twin_peaks(), rheology=rheology, solver=Newton(), zeta=zeta,
                           adhesion=adhesion, penetration=1e-3,
                           discretization=Discretization(elements=32))
     prep = prob.prepare()

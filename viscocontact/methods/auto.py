@@ -72,7 +72,10 @@ class Auto(SolutionMethod):
     def solve(self, problem, initial=None, *, fields: bool = False, prepared=None):
         from .bem import BEM
 
+        from .._events import logger
+
         method, reason = self.choose(problem)
+        logger.info("auto: method %s: %s", method.name, reason)
         result = method.solve(problem, initial, fields=fields, prepared=prepared)
         events = result.extras.setdefault("events", [])
         events.insert(0, f"method {method.name}: {reason}")

@@ -38,7 +38,10 @@ import attrs
 import numpy as np
 
 from .._files import write_atomic
+from .._outputs import check_folder
+from ..data import bench_suite
 from ..errors import TimeLimitExceeded, ValidationError
+from ..methods.bem import BEM
 
 BETA = 10.0
 PEER_FILE = "peer_fft.py"
@@ -153,7 +156,7 @@ def bem_run(case: Case, solver: str, elements: int, repeats: int, budget: float)
     from ..problem import ContactProblem, Discretization
 
     prof, rheology, adhesion = case.components()
-    problem = ContactProblem(profile=prof, rheology=rheology, adhesion=adhesion,
+    problem = ContactProblem(method=BEM(), profile=prof, rheology=rheology, adhesion=adhesion,
                              solver=_solver(solver), mean_pressure=case.mean_pressure,
                              zeta=case.zeta, discretization=Discretization(elements=elements))
 
@@ -333,10 +336,7 @@ def plot(rows: list[dict], path: Path) -> None:
 
     A run whose error is exactly 0 is the reference itself and is left out.
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from ..plots import pyplot_free as plt    # outside pyplot: the caller's backend stays
 
     cases = list(dict.fromkeys(r["case"] for r in rows))
     methods = sorted({r["method"] for r in rows})
@@ -407,8 +407,9 @@ def configure_parser(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--quick", action="store_true",
                         help="three adhesionless scenes, Newton and bisection (about a minute)")
     parser.add_argument("--out", default="bench-results", help="output folder (default: %(default)s)")
-    parser.add_argument("--suite", default="benchmarks",
-                        help="folder holding peer_fft.py (default: ./benchmarks)")
+    parser.add_argument("--suite", default=None,
+                        help="folder holding peer_fft.py (default: ./benchmarks in a source "
+                             "tree, else the copy shipped with the package)")
     parser.add_argument("--repeats", type=int, default=None,
                         help="timed repeats per run, median reported (default 1 quick, 3 full)")
     parser.add_argument("--budget", type=float, default=None,
@@ -468,12 +469,12 @@ def run(args: argparse.Namespace) -> int:
     if args.spectral:
         return run_spectral(args)
     plan = plan_from_args(args)
-    suite = Path(args.suite)
+    suite = bench_suite(args.suite)
     if not suite.is_dir():
         raise ValidationError("--suite", str(suite), "an existing folder that contains "
-                              f"{PEER_FILE} (default ./benchmarks: run from the source tree)")
+                              f"{PEER_FILE}")
     load_peer(suite)                              # fail before any solve
-    out = Path(args.out)
+    out = check_folder("--out", args.out, "an output folder")
     out.mkdir(parents=True, exist_ok=True)
     rows, refs = run_plan(plan, suite, log=lambda m: print(m, file=sys.stderr))
     write_atomic(out / "bench.csv", table_csv(rows).encode())
@@ -560,14 +561,14 @@ def spectral_markdown(rows: list[dict], repeats: int) -> str:
 
 def run_spectral(args: argparse.Namespace) -> int:
     """``viscocontact bench --spectral``: the spectral method against the peer."""
-    suite = Path(args.suite)
+    suite = bench_suite(args.suite)
     peer = load_peer(suite)
+    out = check_folder("--out", args.out, "an output folder")
     repeats = 3 if args.repeats is None else args.repeats
     if repeats < 1 or repeats > 100:
         raise ValidationError("--repeats", repeats, "an integer in [1, 100]")
     seeds = args.seeds or (0, 1, 2, 3, 4)
     rows = spectral_side_by_side(peer, seeds, repeats, log=lambda m: print(m, file=sys.stderr))
-    out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     text = spectral_markdown(rows, repeats)
     write_atomic(out / "spectral.md", text.encode())

@@ -161,6 +161,10 @@ def _problem(profile, *, rheology=None, solver=None, gamma=None, edge_perturbati
         from ..methods.auto import Auto
 
         extra["method"] = Auto(tolerance=tolerance)
+    else:
+        from ..methods.bem import BEM
+
+        extra["method"] = BEM()
     return ContactProblem(profile=profile, rheology=rheology or Elastic(),
                           solver=solver or Newton(),
                           discretization=discretization or Discretization(), **extra, **kw)
@@ -960,12 +964,10 @@ def markdown(plan, sections, ft, timing) -> str:
 # Figures
 # ---------------------------------------------------------------------------------------------
 def _pyplot():
-    import matplotlib
+    """Figures outside pyplot's state: the caller's backend is left alone."""
+    from ..plots import pyplot_free
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
+    return pyplot_free
 
 
 def _plain_ticks(axis, ticks=None) -> None:
@@ -1179,10 +1181,26 @@ def configure_parser(parser: argparse.ArgumentParser) -> None:
     """The options of ``viscocontact validate`` (``python -m viscocontact.reports.validation``)."""
     parser.add_argument("--quick", action="store_true",
                         help="fewer seeds, loads and speeds (under a minute)")
-    parser.add_argument("--out", default="docs",
-                        help="folder for validation.md and figures/ (default: docs)")
+    parser.add_argument("--out", default=None,
+                        help="folder for validation.md and figures/ (default: docs, in a "
+                             "source tree, i.e. a folder with docs/conf.py; required elsewhere)")
     parser.add_argument("--workers", type=int, default=min(2, os.cpu_count() or 1),
                         help="worker processes (default: 2, or 1 on a single core)")
+
+
+def output_folder(out: str | None) -> Path:
+    """``--out``, checked before any solve: by default ``docs`` of the source tree this runs
+    in (a folder with ``docs/conf.py``), never a new ``docs/`` wherever an install runs it."""
+    from .._outputs import check_folder
+    from ..errors import ValidationError
+
+    if out is None:
+        if not Path("docs", "conf.py").is_file():
+            raise ValidationError("--out", None, "a folder for validation.md and figures/ "
+                                                 "(the default, docs/, is only used in a source "
+                                                 "tree: a folder with docs/conf.py)")
+        out = "docs"
+    return check_folder("--out", out, "a folder for validation.md and figures/")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -1191,7 +1209,7 @@ def run(args: argparse.Namespace) -> int:
         from ..errors import ValidationError
 
         raise ValidationError("--workers", args.workers, "an integer >= 1")
-    generate(QUICK if args.quick else FULL, Path(args.out), workers=args.workers,
+    generate(QUICK if args.quick else FULL, output_folder(args.out), workers=args.workers,
              log=lambda m: print(m, file=sys.stderr))
     return 0
 

@@ -82,9 +82,12 @@ def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
 
     Keys of the ``[physical]`` table that would contradict a replaced value (``velocity`` and
     ``tau`` for ζ,
-    ``mean_pressure``/``penetration`` for the load, ``work_of_adhesion`` for the adhesion) are
-    dropped from the copy; the others stay.
+    ``mean_pressure``/``penetration`` for the load, ``work_of_adhesion`` for the adhesion, and
+    ``cohesive_range``/``cohesive_strength`` for an adhesion that is not a Maugis–Dugdale law
+    without its own ``range``) are dropped from the copy; the others stay.
     """
+    from ..units import COHESIVE_KEYS, COHESIVE_KIND
+
     out = {k: (dict(v) if isinstance(v, Mapping) else v) for k, v in base.items()}
     physical = dict(out.get("physical") or {})
     if zeta is not None:
@@ -102,6 +105,9 @@ def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
     if adhesion is not None:
         out["adhesion"] = dict(adhesion)
         physical.pop("work_of_adhesion", None)
+        if adhesion.get("kind") != COHESIVE_KIND or "range" in adhesion:
+            for key in COHESIVE_KEYS:           # the Dugdale law's range: only for its kind
+                physical.pop(key, None)
     if "physical" in out:
         out["physical"] = physical
     return out

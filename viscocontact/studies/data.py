@@ -47,7 +47,7 @@ COUNTS = ("n_contacts", "iterations", "function_evaluations")
 #: What the variables of :meth:`StudyData.to_xarray` are (their ``description`` attribute).
 DESCRIPTIONS = {
     "row": "row of the point in the study file (-1: not computed)",
-    "area": "contact area fraction Ã (eq. 4.17)",
+    "area": "contact length Ã = q0·(length in contact) per period (eq. 4.17; 2π in full contact)",
     "mean_pressure": "mean pressure p̃∞ (eq. 4.17)",
     "penetration": "penetration Δ̃ = Δ/Λ",
     "friction": "friction coefficient μ",
@@ -55,6 +55,27 @@ DESCRIPTIONS = {
     "target": "the imposed value of the controlled load (p̃∞ or Δ̃)",
     "gamma": "γ̃, dimensionless work of adhesion (0: adhesionless)",
     "seconds": "wall time of the point (s)",
+}
+
+
+#: CF attributes (``long_name``, ``units``) of the variables and coordinates of
+#: :meth:`StudyData.to_xarray`, which xarray's plots take as axis labels. Units "1":
+#: dimensionless (the groups of eq. 4.17).
+CF_ATTRS = {
+    "area": ("contact length Ã = q0 a (2π: full contact)", "1"),
+    "mean_pressure": ("mean pressure p̃∞", "1"),
+    "penetration": ("penetration Δ̃ = Δ/Λ", "1"),
+    "friction": ("friction coefficient μ", "1"),
+    "reduced_friction": ("reduced friction μ/√m2", "1"),
+    "n_contacts": ("number of contacts per period", "1"),
+    "min_gap": ("smallest gap outside the contacts g̃", "1"),
+    "target": ("imposed load (p̃∞ or Δ̃)", "1"),
+    "seconds": ("wall time of the point", "s"),
+    "zeta": ("ζ = q0 V τ", "1"),
+    "load": ("imposed load (p̃∞ or Δ̃)", "1"),
+    "gamma": ("γ̃, work of adhesion (0: adhesionless)", "1"),
+    "seed": ("profile seed (-1: the scene's profile)", "1"),
+    "step": ("step along the cycle", "1"),
 }
 
 
@@ -299,6 +320,9 @@ class StudyData:
         for name, text in DESCRIPTIONS.items():
             if name in data:
                 data[name].attrs["description"] = text
+        for name, (long_name, units) in CF_ATTRS.items():
+            if name in data.variables:
+                data[name].attrs.update(long_name=long_name, units=units)
         return data
 
     def _steps(self, grid):

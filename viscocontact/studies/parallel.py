@@ -72,6 +72,15 @@ class SerialBackend:
         pass
 
 
+def _worker_start() -> None:
+    """A worker process: one influence-loop thread, and Ctrl-C left to the parent (which stops
+    the pool and says what is kept) instead of a traceback from every worker."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    set_threads(1)
+
+
 class ProcessBackend:
     """A pool of ``workers`` processes (started with ``spawn``: no state inherited by forking)."""
 
@@ -82,7 +91,7 @@ class ProcessBackend:
         # one influence-loop thread per worker: the workers already take a core each
         self.pool = concurrent.futures.ProcessPoolExecutor(
             max_workers=workers, mp_context=multiprocessing.get_context("spawn"),
-            initializer=set_threads, initargs=(1,))
+            initializer=_worker_start)
 
     def submit(self, fn: Callable, *args) -> concurrent.futures.Future:
         return self.pool.submit(fn, *args)

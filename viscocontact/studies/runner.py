@@ -58,6 +58,17 @@ def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = 
         raise ValidationError("time_limit", time_limit, "a finite number of seconds > 0, or None")
     path = Path(path)
     storage.check_output(path)      # a folder, a missing folder: said as such
+    pool = make_backend(workers, scheduler)     # no Dask, no scheduler: said before a file exists
+    try:
+        return _compute(study, path, pool, resume=resume, overwrite=overwrite,
+                        progress=progress, time_limit=time_limit)
+    finally:
+        pool.close()
+
+
+def _compute(study: Study, path: Path, pool, *, resume: bool, overwrite: bool,
+             progress: TextIO | None, time_limit: float | None) -> StudyData:
+    """:func:`run` on its checked arguments, with the backend ``pool`` (closed by the caller)."""
     with guard.exclusive(path):     # one process at a time computes into a study file
         if path.exists() and resume:
             header = storage.read_header(path)
@@ -76,7 +87,6 @@ def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = 
         bar = Progress(study.kind,
                        sum(study.expected_points(c, records[c.index]) for c in chains),
                        done=sum(len(r) for r in records.values()), stream=progress)
-        pool = make_backend(workers, scheduler)
         pending = {}
         try:
             def submit(chain):
@@ -97,7 +107,6 @@ def run(study: Study, path, *, workers: int = 1, scheduler=None, resume: bool = 
                     bar.update(total=total, note=_note(record))
                     submit(chain)
         finally:
-            pool.close()
             bar.close()
         storage.set_complete(path, True)
         return load_study(path)

@@ -63,7 +63,7 @@ def _check_hashable(obj: Any, name: str) -> None:
 
 def _check_round_trip(section: str, obj: Any, name: str, registered: bool) -> None:
     from .._toml import dumps
-    from ..scene import _init_fields, _plain, build_component, dump_component
+    from ..components import _init_fields, _plain, build_component, dump_component
 
     if registered:
         try:

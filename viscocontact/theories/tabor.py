@@ -8,10 +8,9 @@ r"""The Tabor parameter (thesis equation 1.48) and the crest radius of a rough p
 with ``R`` the crest radius, ``Δγ`` the Dupré energy, ``E*`` the reduced modulus and ``Z0`` the
 equilibrium distance of the traction law (the ``ε`` of :mod:`viscocontact.theories.lennard_jones`).
 The thesis's eq. 1.48 prints ``E*`` to the first power in the first form, which is not
-dimensionless; the second form is the standard one and is what
-:func:`viscocontact.groups.tabor_parameter` computes. This function validates its arguments and
-delegates to that one, so the value is the same everywhere in the package
-(``docs/thesis-notes.md`` §2).
+dimensionless; the second form is the standard one. :func:`tabor_parameter` is the package's
+one definition of it (:mod:`viscocontact.groups` and ``viscocontact describe`` use it), so the
+value is the same everywhere (``docs/thesis-notes.md`` §2).
 
 JKR (infinitely short-range adhesion, the thesis's model) is accurate for ``μ_T >> 1`` (Greenwood:
 for ``μ_T`` above about 3); DMT for ``μ_T << 1``.
@@ -28,7 +27,6 @@ from __future__ import annotations
 
 import math
 
-from .. import groups
 from . import _args
 
 __all__ = ["equivalent_crest_radius", "tabor_parameter"]
@@ -62,8 +60,8 @@ def tabor_parameter(*, radius: float, work_of_adhesion: float, reduced_modulus: 
     g = _args.non_negative("work_of_adhesion", work_of_adhesion)
     e = _args.positive("reduced_modulus", reduced_modulus)
     z = _args.positive("equilibrium_distance", equilibrium_distance)
-    return groups.tabor_parameter(radius=r, work_of_adhesion=g, reduced_modulus=e,
-                                  equilibrium_distance=z)
+    length = g / e                          # the adhesion length l = Δγ/E*
+    return length ** (2.0 / 3.0) * r ** (1.0 / 3.0) / z
 
 
 def equivalent_crest_radius(*, wavelength: float, rms: float) -> float:

@@ -62,3 +62,12 @@ def test_reference_uses_richardson_only_for_a_sensible_order():
 
 def test_pareto_front():
     assert benchmarking.pareto([(1, 5), (2, 6), (3, 1), (0.5, 9)]) == [(0.5, 9), (1, 5), (3, 1)]
+
+
+def test_bench_runs_outside_the_source_tree(tmp_path, monkeypatch, capsys):
+    """Without ``--suite`` and without ``./benchmarks``, the FFT peer shipped with the package."""
+    monkeypatch.chdir(tmp_path)
+    assert main(["bench", "--quick", "--out", "out", "--cases", "sinusoid-noadh-z1",
+                 "--solvers", "newton", "--elements", "8", "--points", "128"]) == 0
+    rows = list(csv.DictReader((tmp_path / "out" / "bench.csv").open()))
+    assert {r["method"] for r in rows} == {"newton", "fft-pdas"}

@@ -11,6 +11,7 @@ from viscocontact.profiles import SelfAffineProfile, Sinusoid
 from viscocontact.reference.westergaard import westergaard_area, westergaard_penetration
 from viscocontact.rheology import StandardLinearSolid
 from viscocontact.solvers import Newton
+from viscocontact.methods.bem import BEM
 
 WAVY = Sinusoid(amplitude=0.1)
 ROUGH = SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=0)
@@ -84,7 +85,8 @@ def test_viscoelastic_limits_reproduce_elastic_answers():
 
 
 def test_viscoelastic_sinusoid_agrees_with_bem():
-    bem = ContactProblem(profile=WAVY, rheology=SLS, solver=Newton(), mean_pressure=0.3,
+    bem = ContactProblem(method=BEM(),
+                         profile=WAVY, rheology=SLS, solver=Newton(), mean_pressure=0.3,
                          zeta=1.0).solve()
     assert bem.converged
     fine = pf.solve(WAVY, 0.3, 4096, rheology=SLS, zeta=1.0)
@@ -146,7 +148,8 @@ def test_wide_rough_contacts_follow_the_profile_and_agree_with_the_peer():
     from viscocontact.rheology import Elastic
     from viscocontact.solvers import Broyden
 
-    prob = ContactProblem(profile=ROUGH, rheology=Elastic(), mean_pressure=0.6, solver=Broyden(),
+    prob = ContactProblem(method=BEM(),
+                          profile=ROUGH, rheology=Elastic(), mean_pressure=0.6, solver=Broyden(),
                           adhesion=NoAdhesion(), discretization=Discretization(elements=32))
     r = prob.solve()
     peer = pf.solve(ROUGH, 0.6, 32768, tol=1e-9)
@@ -173,7 +176,8 @@ def _seed2_problem(**disc):
     from viscocontact.solvers import Broyden
 
     rough = SelfAffineProfile(hurst=0.8, scales=50, rms=0.010005, seed=2)
-    return rough, ContactProblem(profile=rough, rheology=Elastic(), mean_pressure=0.3,
+    return rough, ContactProblem(method=BEM(),
+                                 profile=rough, rheology=Elastic(), mean_pressure=0.3,
                                  solver=Broyden(), adhesion=NoAdhesion(),
                                  discretization=Discretization(elements=32, **disc))
 

@@ -15,6 +15,7 @@ from viscocontact.problem import ContactProblem
 from viscocontact.profiles import SelfAffineProfile
 from viscocontact.rheology import StandardLinearSolid
 from viscocontact.solvers import Broyden
+from viscocontact.methods.bem import BEM
 
 # four contacts of the thesis rough profile (seed 11) near ζ = 1e-2, p̃∞ = 0.1
 EDGES = np.array([4.47037, 4.62705, 4.70036, 5.09036, 5.16383, 5.20679, 5.31652, 5.39046])
@@ -28,7 +29,8 @@ def restore():
 
 @pytest.fixture(scope="module")
 def solve():
-    p = ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=11),
+    p = ContactProblem(method=BEM(),
+                       profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=11),
                        rheology=StandardLinearSolid(beta=10.0),
                        adhesion=EnergyBalance(gamma=2.387e-7), solver=Broyden(),
                        mean_pressure=0.1, zeta=1e-2)

@@ -11,6 +11,7 @@ from viscocontact.problem import INTERIOR_CAP, ContactProblem, Discretization
 from viscocontact.profiles import SelfAffineProfile, Sinusoid
 from viscocontact.rheology import Elastic
 from viscocontact.solvers import Newton
+from viscocontact.methods.bem import BEM
 
 
 @settings(max_examples=40, deadline=None)
@@ -27,7 +28,7 @@ def test_build_mesh_gives_each_contact_its_count(counts):
 
 
 def _run(profile, elements=32, resolution=8.0):
-    prob = ContactProblem(profile=profile, rheology=Elastic(), adhesion=NoAdhesion(),
+    prob = ContactProblem(method=BEM(), profile=profile, rheology=Elastic(), adhesion=NoAdhesion(),
                           solver=Newton(), mean_pressure=0.3,
                           discretization=Discretization(elements=elements,
                                                         interior_resolution=resolution))

@@ -20,6 +20,7 @@ from viscocontact.problem import ContactProblem, Discretization
 from viscocontact.profiles import SelfAffineProfile, Sinusoid
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Newton
+from viscocontact.methods.bem import BEM
 
 SLS = StandardLinearSolid(beta=10.0)
 ROUGH = SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=11)
@@ -29,7 +30,8 @@ ADHESION = {"none": NoAdhesion(), "limit": EnergyBalance(gamma=1e-4, edge_pertur
 
 @functools.cache
 def _solve(profile, rheology, zeta, adhesion, elements=32, kernel=None):
-    p = ContactProblem(profile=profile, rheology=rheology, solver=Newton(), adhesion=adhesion,
+    p = ContactProblem(method=BEM(),
+                       profile=profile, rheology=rheology, solver=Newton(), adhesion=adhesion,
                        mean_pressure=0.1, zeta=zeta, kernel=kernel or HalfPlane(),
                        discretization=Discretization(elements=elements))
     return Solve(p, p.prepare())

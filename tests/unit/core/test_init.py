@@ -17,7 +17,8 @@ EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "scenes"
 SCENE = WAVY
 
 HOMES = {
-    "Scene": "viscocontact.scene", "ContactProblem": "viscocontact.problem",
+    "Scene": "viscocontact.scene", "Load": "viscocontact.scene",
+    "PhysicalResult": "viscocontact.units", "ContactProblem": "viscocontact.problem",
     "Discretization": "viscocontact.problem", "ContactResult": "viscocontact.result",
     "SolveStatus": "viscocontact.result", "Tolerances": "viscocontact.solvers",
     "dimensionless_groups": "viscocontact.groups",

@@ -19,6 +19,7 @@ from viscocontact.problem import ContactProblem
 from viscocontact.profiles import Sinusoid
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Newton
+from viscocontact.methods.bem import BEM
 
 X = np.linspace(-np.pi, np.pi, 4001)
 
@@ -75,7 +76,7 @@ def _problem(**kw):
     base = dict(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
                 solver=Newton(), mean_pressure=0.1, zeta=1.0)
     base.update(kw)
-    return ContactProblem(**base)
+    return ContactProblem(method=BEM(), **base)
 
 
 def test_plan_of_an_adhesive_viscoelastic_half_plane():
@@ -170,7 +171,9 @@ def test_residual_scale_lies_between_relaxed_and_glassy_stiffness(beta, log_zeta
 
 
 def test_plan_reports_the_scaled_tolerance():
-    glassy = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+    glassy = ContactProblem(method=BEM(),
+                            profile=Sinusoid(amplitude=0.1),
+                            rheology=StandardLinearSolid(beta=10.0),
                             solver=Newton(), mean_pressure=0.1, zeta=1e8)
     assert "× 10 (stiffness" in str(glassy.plan())
     relaxed = attrs.evolve(glassy, zeta=0.0)

@@ -63,3 +63,23 @@ def test_plot_study_writes_pngs_and_leaves_pyplot_alone(tmp_path):
     assert matplotlib.get_backend() == backend
     if pyplot is not None:
         assert pyplot.get_fignums() == open_figures
+
+
+def test_a_result_is_drawn_with_its_scene(tmp_path, monkeypatch):
+    """``plot_solution_fields`` takes a ContactResult; the figure names the scene (β, p̃∞) and
+    labels the curve with Ã and where full contact is (2π)."""
+    import pytest
+
+    import viscocontact as vc
+    from viscocontact import plots
+
+    scene = vc.Scene.from_toml(SCENE)
+    result = vc.solve(scene, fields=True)
+    drawn = []
+    monkeypatch.setattr(plots, "_save", lambda fig, path, dpi=90: drawn.append(fig) or path)
+    plots.plot_solution_fields(result, tmp_path / "f.png", scene=scene)
+    top = drawn[0].axes[0]
+    assert "β = 10" in top.get_title() and "p̃∞ = " in top.get_title()
+    assert "(2π: full)" in top.get_legend().get_texts()[0].get_text()
+    with pytest.raises(vc.ValidationError, match=r"solutions\[0\].*fields=True"):
+        plots.plot_solution_fields(vc.solve(scene), tmp_path / "g.png")

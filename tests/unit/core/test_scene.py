@@ -329,6 +329,15 @@ def test_toml_writer():
         dumps({"t": {"x": object()}})
 
 
+def test_toml_writer_escapes_every_control_character():
+    """TOML forbids U+0000-U+001F and U+007F raw in a basic string (keys too): every one is
+    written as an escape and read back as itself."""
+    text = "".join(map(chr, [*range(0x20), 0x7F])) + "é\u2028"
+    written = dumps({"t": {"s": text, text: 1}})
+    assert all(ord(c) >= 0x20 and c != "\x7f" for c in written.replace("\n", ""))
+    assert tomllib.loads(written) == {"t": {"s": text, text: 1}}
+
+
 # ---- bad input: every case names the key ----------------------------------------------------
 BAD = [
     # (label, modifier, expected field, text that must appear in the message)

@@ -10,10 +10,12 @@ from viscocontact.reference import westergaard_area
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.scene import Scene
 from viscocontact.solvers import Bisection, Newton
+from viscocontact.methods.bem import BEM
 
 
 def _wavy(**kw):
     kw.setdefault("rheology", Elastic())
+    kw.setdefault("method", BEM())
     return ContactProblem(profile=Sinusoid(amplitude=0.1), solver=Bisection(), **kw)
 
 
@@ -76,7 +78,8 @@ def test_an_adhesive_scene_solved_by_auto_is_the_bem_solve():
                     rheology=StandardLinearSolid(beta=10.0))
     planned = ContactProblem(profile=Sinusoid(amplitude=0.1), solver=Newton(), method=Auto(),
                              **adhesive).solve()
-    direct = ContactProblem(profile=Sinusoid(amplitude=0.1), solver=Newton(), **adhesive).solve()
+    direct = ContactProblem(method=BEM(),
+                            profile=Sinusoid(amplitude=0.1), solver=Newton(), **adhesive).solve()
     assert planned.method == direct.method == "bem"
     assert planned.area == direct.area and planned.friction == direct.friction
 
@@ -89,11 +92,15 @@ def test_solver_events_reach_logging(caplog):
     with caplog.at_level(logging.INFO, logger="viscocontact.solve"):
         result = _wavy(mean_pressure=0.3, method=Auto()).solve()
     messages = [r.getMessage() for r in caplog.records if r.name == "viscocontact.solve"]
-    assert messages == [f"spectral: {e}" for e in result.extras["events"]]
+    events = result.extras["events"]              # auto's choice, then the method's, as they came
+    assert messages[0] == f"auto: {events[0]}"
+    assert [m.split("] ", 1)[1] for m in messages[1:]] == events[1:]
+    assert all(m.startswith("spectral: [") for m in messages[1:])
     caplog.clear()
     from viscocontact.solvers.base import Tolerances
 
-    stalled = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(), solver=Newton(),
+    stalled = ContactProblem(method=BEM(),
+                             profile=Sinusoid(amplitude=0.1), rheology=Elastic(), solver=Newton(),
                              adhesion=EnergyBalance(gamma=1e-4), mean_pressure=0.1,
                              tolerances=Tolerances(residual=1e-9, max_evaluations=2),
                              fallback=None)
@@ -104,5 +111,7 @@ def test_solver_events_reach_logging(caplog):
 
 
 def test_a_problem_refuses_a_method_that_is_not_one():
-    with pytest.raises(TypeError, match="method"):
+    from viscocontact.errors import ValidationError
+
+    with pytest.raises(ValidationError, match="ContactProblem.method.*Spectral"):
         _wavy(mean_pressure=0.3, method="spectral")

@@ -15,13 +15,15 @@ from viscocontact.problem import ContactProblem
 from viscocontact.profiles import Sinusoid
 from viscocontact.rheology import StandardLinearSolid
 from viscocontact.solvers import Broyden
+from viscocontact.methods.bem import BEM
 
 EDGES = np.array([-0.9, 0.8])
 
 
 @pytest.fixture
 def equilibrium():
-    p = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
+    p = ContactProblem(method=BEM(),
+                       profile=Sinusoid(amplitude=0.1), rheology=StandardLinearSolid(beta=10.0),
                        adhesion=EnergyBalance(gamma=1e-4), solver=Broyden(), mean_pressure=0.1,
                        zeta=1e-2)
     return Solve(p, p.prepare()).equilibrium

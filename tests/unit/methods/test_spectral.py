@@ -25,13 +25,14 @@ from viscocontact.reference import westergaard_area
 from viscocontact.result import SolveStatus
 from viscocontact.rheology import Elastic, PronySeries, StandardLinearSolid
 from viscocontact.solvers import Bisection
+from viscocontact.methods.bem import BEM
 
 SLS = StandardLinearSolid(beta=10.0)
 
 
 def _problem(profile=None, rheology=None, zeta=0.0, kernel=None, **load):
     load = load or {"mean_pressure": 0.3}
-    return ContactProblem(profile=profile or Sinusoid(amplitude=0.1),
+    return ContactProblem(method=BEM(), profile=profile or Sinusoid(amplitude=0.1),
                           rheology=rheology or Elastic(), solver=Bisection(),
                           kernel=kernel or HalfPlane(), zeta=zeta, **load)
 
@@ -347,7 +348,8 @@ def scenes(draw):
     kernel = draw(st.sampled_from([HalfPlane(), ConfinedLayer(thickness=1.0, poisson=0.3)]))
     control = draw(st.sampled_from(["mean_pressure", "penetration"]))
     value = draw(st.floats(0.02, 0.9))
-    return ContactProblem(profile=profile, rheology=rheology, kernel=kernel, solver=Bisection(),
+    return ContactProblem(method=BEM(),
+                          profile=profile, rheology=rheology, kernel=kernel, solver=Bisection(),
                           zeta=zeta, **{control: value})
 
 

@@ -19,12 +19,14 @@ from viscocontact.reference import MaugisDugdaleWavy
 from viscocontact.result import SolveStatus
 from viscocontact.rheology import Elastic, StandardLinearSolid
 from viscocontact.solvers import Broyden
+from viscocontact.methods.bem import BEM
 
 AMPLITUDE = 0.1
 
 
 def _scene(gamma=1e-4, range_=1e-2, rheology=None, zeta=0.0, **control):
-    return ContactProblem(profile=Sinusoid(amplitude=AMPLITUDE), rheology=rheology or Elastic(),
+    return ContactProblem(method=BEM(),
+                          profile=Sinusoid(amplitude=AMPLITUDE), rheology=rheology or Elastic(),
                           adhesion=MaugisDugdale(gamma=gamma, range=range_), solver=Broyden(),
                           zeta=zeta, **control)
 

@@ -99,6 +99,10 @@ def test_sweep_dataset_is_the_table_on_named_axes(sweep_file):
     assert ds.gamma.sel(variant="adhesive").values.ravel()[0] == 3e-5
     assert ds.attrs["scene"] == data.scene_toml and ds.attrs["complete"] == 0
     assert ds.attrs["control"] == "mean_pressure" and ds.attrs["kind"] == "sweep"
+    # CF attributes, which xarray's plots take as axis labels; Ã is a length (2π: full contact)
+    assert ds.area.attrs["units"] == "1" and "2π" in ds.area.attrs["long_name"]
+    assert "fraction" not in ds.area.attrs["description"]
+    assert ds.zeta.attrs["long_name"] == "ζ = q0 V τ" and ds.seconds.attrs["units"] == "s"
 
 
 def test_approached_points_have_the_grid_of_a_ramp(tmp_path, adhesive):

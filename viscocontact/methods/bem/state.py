@@ -7,6 +7,8 @@ from typing import Any
 import attrs
 import numpy as np
 
+from ..._events import EventList
+
 
 class Outcome(enum.Enum):
     """How an equilibrium step ended."""
@@ -51,7 +53,7 @@ class SolveLog:
     def __init__(self):
         self.iterations = 0
         self.evaluations = 0
-        self.events: list[str] = []
+        self.events: list[str] = EventList("bem")       # logged as they happen
         self.history: list[float] = []
 
     def event(self, text: str) -> None:

@@ -15,6 +15,7 @@ from typing import ClassVar
 import attrs
 import numpy as np
 
+from ..._events import EventList
 from ..._validation import in_range, int_range
 from ...errors import ValidationError
 from ...kernels.clausen import TWO_PI
@@ -311,7 +312,7 @@ class Spectral(SolutionMethod):
         prep = self._prepared(problem, prepared)
         law = self.law(problem, prep.shape.amplitude)
         load, pen = problem.mean_pressure, problem.penetration
-        events: list[str] = []
+        events: list[str] = EventList("spectral")      # logged as they happen
         extras = {"method": self.name, "error_estimate": 0.0, "points": 0, "tolerance_met": True,
                   "friction_dissipation": np.nan, "seconds": 0.0, "events": events}
         common = dict(iterations=0, function_evaluations=0, zeta=float(problem.zeta),
