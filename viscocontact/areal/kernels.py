@@ -129,12 +129,15 @@ class ArealKernel:
     # ---- the grid operator -------------------------------------------------------------------
     def _radial(self, q: np.ndarray) -> np.ndarray:
         """``S(|q|)/|q|`` with 0 at ``q = 0``."""
-        with np.errstate(divide="ignore"):
-            inv = 1.0 / q
-        inv[q == 0.0] = 0.0
-        if self.prepared.kernel.correction_modes() == 0:
-            return inv
-        return self.prepared.kernel.geometry_factors(q) * inv
+        zero = q == 0.0
+        if zero.any():
+            q = np.where(zero, 1.0, q)
+        inv = 1.0 / q
+        if self.prepared.kernel.correction_modes() != 0:
+            inv = self.prepared.kernel.geometry_factors(q) * inv
+        if zero.any():
+            inv[np.broadcast_to(zero, inv.shape)] = 0.0
+        return inv
 
     def _alias_sum(self, nx: int, ny: int, aliases: int, power: int, row, weights) -> np.ndarray:
         """``Σ_{l,k} w_l w_k row(q·e) S(|q|)/|q| (sinc_x sinc_y)^power`` over ``q = (n + l nx,

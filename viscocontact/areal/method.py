@@ -136,10 +136,12 @@ class ArealSpectral:
         return 256, ny
 
     def ladder(self, nx: int, ny: int) -> list[tuple[int, int]]:
-        """The grids of a solve, coarse to fine (each side halved while both stay even and the
-        coarser side above :data:`LADDER_START`)."""
+        """The grids of a solve, coarse to fine: each side halved while both stay even, the
+        coarser side at least 8, and the finer side above :data:`LADDER_START` or a single grid
+        so far (the estimate needs two)."""
         grids = [(nx, ny)]
-        while max(nx, ny) > LADDER_START and nx % 4 == 0 and ny % 4 == 0 and min(nx, ny) >= 16:
+        while (max(nx, ny) > LADDER_START or len(grids) < 2) and nx % 4 == 0 and ny % 4 == 0 \
+                and min(nx, ny) >= 16:
             nx, ny = nx // 2, ny // 2
             grids.append((nx, ny))
         return grids[::-1]

@@ -1,0 +1,137 @@
+"""The areal spectral method: a surface extruded along y against the 1D spectral method on the
+same grid, load and penetration control, input checks and the memory plan."""
+import numpy as np
+import pytest
+
+from viscocontact.areal.method import ArealSpectral
+from viscocontact.areal.problem import ArealProblem
+from viscocontact.areal.surfaces.base import Surface
+from viscocontact.errors import ValidationError
+from viscocontact.kernels.layers import ConfinedLayer
+from viscocontact.methods.spectral import Spectral
+from viscocontact.methods.spectral.grid import UniformGrid
+from viscocontact.problem import ContactProblem
+from viscocontact.profiles import SelfAffineProfile
+from viscocontact.result import SolveStatus
+from viscocontact.rheology import Elastic, StandardLinearSolid
+from viscocontact.solvers import Bisection
+
+SLS = StandardLinearSolid(beta=10.0)
+PROFILE = SelfAffineProfile(hurst=0.8, scales=16, rms=0.01, seed=1)
+N = 256
+
+
+def _extruded(profile, points, rows, **problem):
+    """The 1D problem and its profile extruded along y on the 1D method's grid (cell centres
+    from the peak), as an array of ``rows`` identical rows."""
+    prob = ContactProblem(profile=profile, rheology=SLS, solver=Bisection(), **problem)
+    prep = prob.prepare()
+    grid = UniformGrid.of(prep.shape, points)
+    heights = np.broadcast_to(grid.heights * prep.shape.amplitude, (rows, points))
+    return prob, ArealProblem(surface=heights, rheology=SLS, **problem)
+
+
+@pytest.mark.parametrize("zeta", [1e-4, 1.0, 1e4])
+def test_an_extruded_profile_is_the_1d_solution(zeta):
+    """Area, mean pressure, penetration and friction of the 1D spectral method on the same grid
+    to 1e-8 (both solved to a residual of 1e-12: at the default 1e-9 μ, of order 1e-5 near the
+    elastic limits, differs by 2e-7 of itself)."""
+    one, two = _extruded(PROFILE, N, 8, zeta=zeta, mean_pressure=0.3)
+    r1 = Spectral(points=N, residual=1e-12).solve(one)
+    r2 = ArealSpectral(residual=1e-12).solve(two)
+    assert r1.converged and r2.converged
+    assert r2.area == pytest.approx(r1.area, rel=1e-8)
+    assert r2.mean_pressure == pytest.approx(r1.mean_pressure, rel=1e-12)
+    assert r2.penetration == pytest.approx(r1.penetration, rel=1e-8)
+    assert r2.friction == pytest.approx(r1.friction, rel=1e-8)
+    assert r2.extras["friction_dissipation"] == pytest.approx(r1.extras["friction_dissipation"],
+                                                              rel=1e-8)
+    assert r2.extras["area_fraction"] == pytest.approx(r1.area / (2 * np.pi), rel=1e-8)
+    # each contact of the profile is a band across the cell: one patch each, elongated along y
+    assert r2.n_contacts == r1.n_contacts
+    assert r2.extras["patches"]["percolating"] == r1.n_contacts
+
+
+def test_penetration_control_gives_the_load_controlled_state():
+    _, prob = _extruded(PROFILE, 128, 8, zeta=1.0, mean_pressure=0.3)
+    loaded = ArealSpectral().solve(prob)
+    again = ArealSpectral().solve(ArealProblem(surface=prob.surface, rheology=SLS, zeta=1.0,
+                                               penetration=loaded.penetration))
+    assert again.mean_pressure == pytest.approx(0.3, rel=1e-7)
+    assert again.area == pytest.approx(loaded.area, rel=1e-7)
+
+
+def test_an_extruded_profile_on_a_compressible_layer_is_the_1d_solution():
+    """The layer's geometry factor and mean compliance (the penetration from the far surface)."""
+    layer = ConfinedLayer(thickness=0.5, poisson=0.3)
+    one, two = _extruded(PROFILE, 128, 8, zeta=1.0, mean_pressure=0.3, kernel=layer)
+    r1 = Spectral(points=128, residual=1e-12).solve(one)
+    r2 = ArealSpectral(residual=1e-12).solve(two)
+    assert r2.area == pytest.approx(r1.area, rel=1e-8)
+    assert r2.penetration == pytest.approx(r1.penetration, rel=1e-8)
+    assert r2.friction == pytest.approx(r1.friction, rel=1e-8)
+
+
+def test_no_load_is_no_contact_and_a_flat_surface_is_refused():
+    h = np.cos(np.arange(16) * 2 * np.pi / 16)[None, :] * np.ones((4, 1))
+    r = ArealSpectral().solve(ArealProblem(surface=h, rheology=Elastic(), mean_pressure=0.0))
+    assert r.status is SolveStatus.NO_CONTACT and r.area == 0.0
+    with pytest.raises(ValidationError, match="ArealProblem.surface"):
+        ArealSpectral().solve(ArealProblem(surface=np.zeros((8, 8)), rheology=Elastic(),
+                                           mean_pressure=0.1))
+
+
+def test_fields_have_the_grid_shape():
+    x = np.arange(32) * 2 * np.pi / 32
+    h = 0.1 * (np.cos(x)[None, :] + np.cos(x)[:, None])
+    r = ArealSpectral().solve(ArealProblem(surface=h, rheology=Elastic(), mean_pressure=0.05),
+                              fields=True)
+    for key in ("x", "y", "heights", "pressure", "displacement", "gap"):
+        assert r.fields[key].shape == (32, 32)
+    assert r.n_contacts == 1 and r.fields["patches"].count == 1
+    assert np.max(np.abs(r.fields["gap"][r.fields["pressure"] > 0])) <= 2e-9
+    assert r.extras["mean_gap"] == pytest.approx(np.mean(r.fields["gap"]))
+
+
+class _Bumps(Surface):
+    def heights(self, nx, ny):
+        x, y = self.grid(nx, ny)
+        return 0.05 * (np.cos(x) + np.cos(y))
+
+
+def test_a_surface_is_sampled_on_the_grid_asked_for():
+    r = ArealSpectral(points=64).solve(ArealProblem(surface=_Bumps(), rheology=Elastic(),
+                                                    mean_pressure=0.05))
+    assert r.extras["points"] == (64, 64) and r.converged
+    assert [e.split(" ")[0] for e in r.extras["events"]] == ["32×32", "64×64"]
+
+
+@pytest.mark.parametrize("kw,field", [
+    (dict(points=7), "ArealSpectral.points"), (dict(points=(64, 63)), "ArealSpectral.points"),
+    (dict(tolerance=0.0), "ArealSpectral.tolerance"), (dict(workers=0), "ArealSpectral.workers"),
+    (dict(max_memory=1.0), "ArealSpectral.max_memory")])
+def test_bad_options_name_the_field(kw, field):
+    with pytest.raises(ValidationError, match=field):
+        ArealSpectral(**kw)
+
+
+@pytest.mark.parametrize("kw,field", [
+    (dict(surface=np.zeros((5, 8))), "ArealProblem.surface"),
+    (dict(surface=np.zeros(8)), "ArealProblem.surface"),
+    (dict(surface=np.zeros((8, 8)), mean_pressure=None), "ArealProblem.mean_pressure"),
+    (dict(surface=np.zeros((8, 8)), penetration=0.1), "ArealProblem.mean_pressure"),
+    (dict(surface=np.zeros((8, 8)), zeta=-1.0), "ArealProblem.zeta")])
+def test_bad_problems_name_the_field(kw, field):
+    args = dict(rheology=Elastic(), mean_pressure=0.1)
+    args.update(kw)
+    with pytest.raises(ValidationError, match=field):
+        ArealProblem(**args)
+
+
+def test_memory_is_planned_and_a_scene_too_big_is_refused():
+    method = ArealSpectral(max_memory=1e8)
+    prob = ArealProblem(surface=_Bumps(), rheology=SLS, zeta=1.0, mean_pressure=0.1)
+    plan = {step.stage: step for step in method.plan(prob)}
+    assert "MB planned" in plan["memory"].choice and "active set" in plan["solver"].choice
+    with pytest.raises(ValidationError, match=r"ArealSpectral.max_memory .* 2048×2048"):
+        ArealSpectral(points=2048, max_memory=1e8).solve(prob)
