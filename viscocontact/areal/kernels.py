@@ -24,12 +24,13 @@ is a 2D circulant whose eigenvalues are the alias sums
 .. math:: Λ_{nj} = \sum_{l,k} λ(n + l n_x, (j + k n_y)/a)\,
           \mathrm{sinc}\Big(\frac{n + l n_x}{n_x}\Big)\,\mathrm{sinc}\Big(\frac{j + k n_y}{n_y}\Big)
 
-(``a`` the cell's aspect ratio, ``sinc(t) = sin(πt)/(πt)``), summed over ``|l|, |k| <= L`` with
-the outermost two partial sums averaged as in :func:`~viscocontact.methods.spectral.operator.
-eigenvalues`. The row ``j = 0`` (fields that do not depend on ``y``) only has the ``k = 0`` term,
-``sinc(k) = 0`` otherwise: it is the 1D operator, and with ``e = x`` it is taken from the 1D
-method's eigenvalues (closed form of the instantaneous part and its alias sums) so that a surface
-extruded along ``y`` gives the 1D method's solution to round-off.
+(``a`` the cell's aspect ratio, ``sinc(t) = sin(πt)/(πt)``), summed over ``|l|, |k| <= L``
+(:data:`ALIASES`) with the outermost two partial sums averaged as in
+:func:`~viscocontact.methods.spectral.operator.eigenvalues`. The row ``j = 0`` (fields that do
+not depend on ``y``) only has the ``k = 0`` term, ``sinc(k) = 0`` otherwise: it is the 1D
+operator, and with ``e = x`` it is taken from the 1D method's eigenvalues (closed form of the
+instantaneous part and its alias sums) so that a surface extruded along ``y`` gives the 1D
+method's solution to round-off.
 
 The power that the pressure feeds into the solid per unit sliding speed and unit area is
 ``-<p ∂u/∂s> = Σ_q |P_q|² D_q`` with ``D_q = Σ_{l,k} (q·e) Im λ(q) sinc² sinc²`` over the same
@@ -37,11 +38,15 @@ aliases (non-negative for every rheology).
 """
 from __future__ import annotations
 
+from typing import cast
+
 import attrs
 import numpy as np
 
 from .._validation import in_range, positive
 from ..kernels.clausen import TWO_PI
+from ..kernels.base import GreenKernel
+from ..kernels.prepared import PreparedKernel
 from ..methods.spectral.operator import Circulant, dissipation_weights, eigenvalues, invert
 
 #: Aliases summed on each side in each direction (the partial sums' last two averaged): at 4
@@ -86,7 +91,7 @@ class ArealKernel:
         ``L_y/L_x`` of the cell.
     """
 
-    prepared: object
+    prepared: PreparedKernel
     direction: float = attrs.field(default=0.0, validator=in_range(-np.pi, np.pi))
     aspect: float = attrs.field(default=1.0, validator=positive)
 
@@ -97,6 +102,11 @@ class ArealKernel:
         ``rheology`` at ``ζ = q0 V τ``, sliding at ``direction`` on a cell of ``aspect``."""
         return cls(prepared=kernel.prepare(rheology, zeta), direction=float(direction),
                    aspect=float(aspect))
+
+    @property
+    def geometry(self) -> GreenKernel:
+        """The 1D kernel's geometry (half-plane, layers)."""
+        return cast(GreenKernel, self.prepared.kernel)
 
     @property
     def along_x(self) -> bool:
@@ -117,8 +127,8 @@ class ArealKernel:
         qs = np.where(zero, 1.0, q)
         # sliding along x̃: the compliance depends on qx alone (evaluated once per column)
         k = self.prepared.compliance(qx if self.along_x else self.frequency(qx, qy))
-        geometry = (1.0 if self.prepared.kernel.correction_modes() == 0
-                    else self.prepared.kernel.geometry_factors(qs))
+        geometry = (1.0 if self.geometry.correction_modes() == 0
+                    else self.geometry.geometry_factors(qs))
         value = geometry * k / qs
         return np.where(zero, 0.0, value)
 
@@ -133,8 +143,8 @@ class ArealKernel:
         if zero.any():
             q = np.where(zero, 1.0, q)
         inv = 1.0 / q
-        if self.prepared.kernel.correction_modes() != 0:
-            inv = self.prepared.kernel.geometry_factors(q) * inv
+        if self.geometry.correction_modes() != 0:
+            inv = self.geometry.geometry_factors(q) * inv
         if zero.any():
             inv[np.broadcast_to(zero, inv.shape)] = 0.0
         return inv

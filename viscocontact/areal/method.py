@@ -36,7 +36,7 @@ from .._validation import in_range, int_range
 from ..errors import ValidationError
 from ..kernels.clausen import TWO_PI
 from ..methods.spectral.method import estimate
-from ..methods.spectral.operator import convolve
+from ..methods.spectral.operator import Circulant, convolve
 from ..methods.spectral.solvers import GridSolution, grid_solve, violation
 from ..result import ContactResult, SolveStatus
 from .kernels import ArealKernel
@@ -62,7 +62,7 @@ class Level:
     ny: int
     heights: np.ndarray        # r̃ = q0 h/Λ̃, flat (row by row)
     slope: np.ndarray          # ∂(q0 h)/∂s̃ along the sliding direction, per cell, flat
-    circulant: object
+    circulant: Circulant
 
 
 @attrs.frozen(kw_only=True, eq=False)
@@ -197,7 +197,8 @@ class ArealSpectral:
         area fraction (the mean contact length per grid row, as the 1D method's ``Ã``),
         ``n_contacts`` the number of patches, ``edges`` empty; ``extras`` hold
         ``area_fraction``, ``mean_gap``, ``dissipated_power``, ``friction_dissipation``,
-        ``patches`` (:meth:`PatchStatistics.summary`), ``points`` and the estimate. With
+        ``patches`` (:meth:`PatchStatistics.summary`), ``points``, the estimate and ``grids`` (per
+        grid: cells, solver, iterations, operator products, area, μ, seconds). With
         ``fields``: ``x``, ``y``, ``heights``, ``pressure``, ``displacement``, ``gap`` of shape
         ``(ny, nx)`` and the :class:`~viscocontact.areal.results.PatchStatistics`.
 
@@ -217,8 +218,8 @@ class ArealSpectral:
         amplitude = float(fine.max())
         if not amplitude > 0:
             raise ValidationError("ArealProblem.surface", "a flat surface", "heights with a peak")
-        extras: dict = {"method": self.name, "events": [], "seconds": 0.0}
-        common = dict(zeta=float(problem.zeta), edge_perturbation=0.0, extras=extras)
+        extras: dict = {"method": self.name, "events": [], "grids": [], "seconds": 0.0}
+        common: dict = dict(zeta=float(problem.zeta), edge_perturbation=0.0, extras=extras)
         load, pen = problem.mean_pressure, problem.penetration
         if (load is not None and not load > 0) or (pen is not None and not pen > 0):
             return ContactResult(
@@ -231,6 +232,7 @@ class ArealSpectral:
         iterations = applications = 0
         start = None
         for gx, gy in self.ladder(nx, ny):
+            begun = time.perf_counter()
             level = self._level(fine, amplitude, kernel, nx, ny, gx, gy)
             if previous is not None:
                 start = _refine(previous.solution.pressure, previous.level)
@@ -243,6 +245,11 @@ class ArealSpectral:
             iterations += sol.iterations
             applications += sol.applications
             extras["events"].append(f"{gx}×{gy} cells: {sol.solver}, {sol.message}")
+            extras["grids"].append({"points": (gx, gy), "solver": sol.solver,
+                                    "iterations": int(sol.iterations),
+                                    "applications": int(sol.applications),
+                                    "area": current.area, "friction": current.friction,
+                                    "seconds": time.perf_counter() - begun})
             if not sol.converged:
                 break
             if previous is not None:

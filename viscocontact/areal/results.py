@@ -53,8 +53,8 @@ def row_lengths(pressure: np.ndarray, gap: np.ndarray, cell: float) -> np.ndarra
     A run of at least three loaded cells has its left edge from ``p_first/p_next``
     (:func:`~viscocontact.methods.spectral.edges.edge_offset`) and its right edge from the gaps
     of the next two free cells (from the pressures when the next contact leaves fewer than two
-    free cells); a shorter run its cells (:func:`~viscocontact.methods.spectral.edges.
-    contact_edges` row by row).
+    free cells); a shorter run its cells
+    (:func:`~viscocontact.methods.spectral.edges.contact_edges` row by row).
     """
     p = np.asarray(pressure, dtype=float)
     g = np.asarray(gap, dtype=float)
@@ -229,4 +229,4 @@ def _wrapping(labels: np.ndarray, n: int) -> np.ndarray:
     rows = np.zeros((n + 1, ny), bool)
     columns[lab, ii] = True
     rows[lab, jj] = True
-    return columns[1:].all(axis=1) | rows[1:].all(axis=1)
+    return np.asarray(columns[1:].all(axis=1) | rows[1:].all(axis=1))
