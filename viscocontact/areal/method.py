@@ -35,6 +35,8 @@ import numpy as np
 from .._validation import in_range, int_range
 from ..errors import ValidationError
 from ..kernels.clausen import TWO_PI
+from ..methods.spectral.cohesive import (CELLS_PER_ZONE, GridLaw, cohesive_solve,
+                                         law_violation, zone_cells)
 from ..methods.spectral.method import estimate
 from ..methods.spectral.operator import Circulant, convolve
 from ..methods.spectral.solvers import GridSolution, grid_solve, violation
@@ -74,6 +76,8 @@ class Measured:
     gap: np.ndarray
     area: float                # 2π × area fraction (the 1D method's Ã on an extruded surface)
     friction: float
+    contact: np.ndarray        # cells in contact (flat)
+    weights: np.ndarray | None = None   # share of each cell under a cohesive law's stress
 
 
 def _points(value):
@@ -162,9 +166,25 @@ class ArealSpectral:
                        and np.isfinite(problem.zeta))
         need = self.memory(nx, ny, symmetric=not viscous)
         grids = " → ".join(f"{a}×{b}" for a, b in self.ladder(nx, ny))
+        law = self.law(problem, float(np.max(problem.heights(nx, ny))))
+        cohesive: tuple = ()
+        if law is not None:
+            cells = zone_cells(law, nx)
+            cohesive = (PlanStep(
+                stage="adhesion",
+                choice=f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the "
+                       f"gap is below η = {law.opening:.4g}; tips along the rows; {cells:.1f} "
+                       f"cells per quasi-static zone q0a0 = {law.zone:.3g}",
+                reason=(f"at least {CELLS_PER_ZONE:g} cells per zone wanted" if
+                        cells >= CELLS_PER_ZONE else
+                        f"UNDER-RESOLVED: fewer than {CELLS_PER_ZONE:g} cells per zone; the "
+                        f"zone needs {int(np.ceil(CELLS_PER_ZONE * TWO_PI / law.zone))} cells "
+                        "a side")),)
         return (
             PlanStep(stage="method", choice="areal spectral: uniform 2D grid, rfft2 products",
-                     reason="adhesionless areal scene"),
+                     reason="adhesionless areal scene" if law is None else
+                            "finite-range cohesive law (wide zones)"),
+            *cohesive,
             PlanStep(stage="grid", choice=f"{grids} cells (nested iteration)",
                      reason="the array's own grid" if problem.native_points else
                             "points" if self.points else "default 256 per side"),
@@ -182,7 +202,7 @@ class ArealSpectral:
 
     # ---- the solve ---------------------------------------------------------------------------
     def solve(self, problem: ArealProblem, *, fields: bool = False) -> ContactResult:
-        """The equilibrium of an adhesionless areal ``problem`` (:meth:`_solve`), with BLAS on
+        """The equilibrium of an areal ``problem`` (:meth:`_solve`), with BLAS on
         one thread (the Gram-Schmidt products of GMRES ran 3.6 times slower on two threads of a
         loaded two-core machine, 512² grid)."""
         from .._blas import single_blas_thread
@@ -221,7 +241,13 @@ class ArealSpectral:
         extras: dict = {"method": self.name, "events": [], "grids": [], "seconds": 0.0}
         common: dict = dict(zeta=float(problem.zeta), edge_perturbation=0.0, extras=extras)
         load, pen = problem.mean_pressure, problem.penetration
-        if (load is not None and not load > 0) or (pen is not None and not pen > 0):
+        law = self.law(problem, amplitude)
+        if law is not None and load is not None and not load > 0:
+            raise ValidationError("ArealProblem.mean_pressure", load,
+                                  "> 0 with a cohesive law under load control (the grid starts "
+                                  "from the adhesionless contact); use penetration control")
+        reach = 0.0 if law is None else -law.opening
+        if (load is not None and not load > 0) or (pen is not None and not pen > reach):
             return ContactResult(
                 area=0.0, mean_pressure=0.0, penetration=np.nan if pen is None else float(pen),
                 friction=np.nan, reduced_friction=np.nan, n_contacts=0, edges=np.zeros((0, 2)),
@@ -235,13 +261,18 @@ class ArealSpectral:
             begun = time.perf_counter()
             level = self._level(fine, amplitude, kernel, nx, ny, gx, gy)
             if previous is not None:
-                start = _refine(previous.solution.pressure, previous.level)
-            sol = grid_solve(level.circulant, level.heights, mean_pressure=load,
-                             penetration=pen, start=start,
-                             start_penetration=None if previous is None
-                             else previous.solution.penetration,
-                             presolve=start is None, **self._grid_options())
-            current = self._measure(level, sol)
+                start = _refine(previous.solution.pressure, previous.level,
+                                inside=law is None)
+            start_pen = None if previous is None else previous.solution.penetration
+            if law is None:
+                sol = grid_solve(level.circulant, level.heights, mean_pressure=load,
+                                 penetration=pen, start=start, start_penetration=start_pen,
+                                 presolve=start is None, **self._grid_options())
+                current = self._measure(level, sol)
+            else:
+                sol, contact, weights = self._solve_cohesive(level, load, pen, start,
+                                                             start_pen, law)
+                current = self._measure(level, sol, law, contact, weights)
             iterations += sol.iterations
             applications += sol.applications
             extras["events"].append(f"{gx}×{gy} cells: {sol.solver}, {sol.message}")
@@ -262,8 +293,19 @@ class ArealSpectral:
         extras.update(error_estimate=error, points=(current.level.nx, current.level.ny),
                       tolerance_met=bool(error <= self.tolerance),
                       estimates={"area": float(errors[0]), "friction": float(errors[1])})
+        if law is not None:
+            cells = zone_cells(law, current.level.nx)
+            extras["cohesive"] = {
+                "strength": law.strength, "opening": law.opening, "zone": law.zone,
+                "cells_per_zone": cells, "cohesive_cells": int(np.sum(
+                    (current.weights > 0) & ~current.contact)) if current.weights is not None
+                else 0}
+            if cells < CELLS_PER_ZONE:
+                extras["events"].append(
+                    f"the cohesive zone q0a0 = {law.zone:.3g} spans {cells:.1f} cells (fewer "
+                    f"than {CELLS_PER_ZONE:g}): under-resolved along x")
         result = self._assemble(problem, kernel, current, amplitude, fine, iterations,
-                                applications, fields, common)
+                                applications, fields, common, law)
         extras["seconds"] = time.perf_counter() - started
         return result
 
@@ -282,21 +324,60 @@ class ArealSpectral:
         return Level(nx=gx, ny=gy, heights=heights.ravel(), slope=slope.ravel(),
                      circulant=kernel.circulant(gx, gy))
 
-    def _measure(self, level: Level, sol: GridSolution) -> Measured:
+    def _measure(self, level: Level, sol: GridSolution, law: GridLaw | None = None,
+                 contact=None, weights=None) -> Measured:
         p = sol.pressure
         gap = convolve(p, level.circulant.eigenvalues, self.workers or 1) \
             - (level.heights - 1.0 + sol.penetration)
         shape = (level.ny, level.nx)
-        area = TWO_PI * area_fraction(p.reshape(shape), gap.reshape(shape))
+        if law is None:
+            contact = p > 0
+            shifted = p
+        else:        # the Maugis-Dugdale edge has the adhesionless field of p + σ̃0
+            shifted = np.where(contact, p + law.strength, 0.0)
+        area = TWO_PI * area_fraction(shifted.reshape(shape), gap.reshape(shape))
         return Measured(level=level, solution=sol, gap=gap, area=area,
-                        friction=friction(p, level.slope))
+                        friction=friction(p, level.slope), contact=np.asarray(contact, bool),
+                        weights=weights)
+
+    def _solve_cohesive(self, level: Level, load, pen, start, start_pen, law: GridLaw):
+        """A cohesive grid solve (:func:`~viscocontact.methods.spectral.cohesive.
+        cohesive_solve`, tips along the rows); on the first grid from the adhesionless
+        solution (load control) or from no load (penetration control)."""
+        its = apps = 0
+        if start is None and load is not None:
+            bare = grid_solve(level.circulant, level.heights, mean_pressure=load,
+                              presolve=True, **self._grid_options())
+            its, apps = bare.iterations, bare.applications
+            start, start_pen = bare.pressure, bare.penetration
+        elif start is None:
+            start = np.zeros(level.heights.size)
+        solved = cohesive_solve(level.circulant, level.heights, law, mean_pressure=load,
+                                penetration=pen, start=start, start_penetration=start_pen,
+                                rows=level.ny, **self._grid_options())
+        sol = attrs.evolve(solved.solution, iterations=solved.solution.iterations + its,
+                           applications=solved.solution.applications + apps)
+        return sol, solved.contact, solved.weights
+
+    @staticmethod
+    def law(problem: ArealProblem, amplitude: float) -> GridLaw | None:
+        """The problem's cohesive law on the grid, None without adhesion."""
+        model = problem.adhesion
+        if model is None or not float(model.work_of_adhesion) > 0:
+            return None
+        law = model.cohesive_law(amplitude)
+        if law is None:
+            raise ValidationError("ArealProblem.adhesion", model,
+                                  "a finite-range law with a cohesive form (maugis-dugdale)")
+        return GridLaw(strength=float(law[0]), opening=float(law[1]), zone=float(law[2]))
 
     def _assemble(self, problem, kernel: ArealKernel, current: Measured, amplitude, fine,
-                  iterations, applications, fields, common) -> ContactResult:
+                  iterations, applications, fields, common,
+                  law: GridLaw | None = None) -> ContactResult:
         level, sol, extras = current.level, current.solution, common["extras"]
         shape = (level.ny, level.nx)
         p, gap = sol.pressure, current.gap
-        loaded = p > 0
+        loaded = current.contact
         pm = float(p.mean())
         workers = self.workers or 1
         weights = kernel.dissipation_weights(level.nx, level.ny)
@@ -325,22 +406,25 @@ class ArealSpectral:
                      f"{sol.message}") + ("" if extras["tolerance_met"] else
                                           f"; tolerance {self.tolerance:g} not met (estimate "
                                           f"{extras['error_estimate']:.2g})"),
-            residual=violation(gap, loaded), iterations=int(iterations),
+            residual=(violation(gap, loaded) if law is None else
+                      law_violation(p, gap, loaded, current.weights, law)),
+            iterations=int(iterations),
             function_evaluations=int(applications),
             min_gap=float(np.min(gap[~loaded])) if (~loaded).any() else 0.0,
             fields=fld, **common)
 
 
-def _refine(pressure: np.ndarray, level: Level) -> np.ndarray:
+def _refine(pressure: np.ndarray, level: Level, inside: bool = True) -> np.ndarray:
     """A coarse pressure carried to the grid twice as fine: the coarse values at the coinciding
-    centres, the mean of the neighbours between them where all of those neighbours carry load
-    and zero elsewhere, so that the first loaded set lies inside the coarse contacts (flat, row
-    by row)."""
+    centres, the mean of the neighbours between them; with ``inside`` only where all of those
+    neighbours carry load (zero elsewhere), so that the first loaded set lies inside the coarse
+    contacts (flat, row by row)."""
     p = pressure.reshape(level.ny, level.nx)
 
     def between(a, axis):
         right = np.roll(a, -1, axis=axis)
-        return np.where((a > 0) & (right > 0), 0.5 * (a + right), 0.0)
+        mean = 0.5 * (a + right)
+        return np.where((a > 0) & (right > 0), mean, 0.0) if inside else mean
 
     out = np.empty((2 * level.ny, 2 * level.nx))
     out[0::2, 0::2] = p

@@ -61,6 +61,9 @@ class ArealProblem:
         Sliding direction, radians from the ``x̃`` axis, in ``[-π, π]``.
     aspect : float
         ``L_y/L_x`` of an array's cell (a Surface has its own; default 1).
+    adhesion : AdhesionModel or None
+        A finite-range law applied cell by cell (:meth:`AdhesionModel.cohesive_law`:
+        :class:`~viscocontact.adhesion.MaugisDugdale`); None: adhesionless.
     """
 
     surface: Any = attrs.field(converter=_heights_field)
@@ -73,8 +76,12 @@ class ArealProblem:
         default=None, validator=attrs.validators.optional(in_range()))
     direction: float = attrs.field(default=0.0, validator=in_range(-np.pi, np.pi))
     aspect: float = attrs.field(default=1.0, validator=positive)
+    adhesion: Any = None
 
     def __attrs_post_init__(self):
+        if self.adhesion is not None and not hasattr(self.adhesion, "cohesive_law"):
+            raise ValidationError("ArealProblem.adhesion", self.adhesion,
+                                  "None or an AdhesionModel with a cohesive law")
         if (self.mean_pressure is None) == (self.penetration is None):
             raise ValidationError("ArealProblem.mean_pressure", self.mean_pressure,
                                   "exactly one of mean_pressure and penetration")

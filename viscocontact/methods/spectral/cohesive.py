@@ -191,11 +191,33 @@ def _secant(position, residual, before, slope_hint):
     return position - residual / slope
 
 
+def _row_tips(gap, contact, law: GridLaw, rows: int) -> list:
+    """:func:`tip_positions` of every row (cells flat, row by row)."""
+    g = np.asarray(gap).reshape(rows, -1)
+    c = np.asarray(contact).reshape(rows, -1)
+    return [tip_positions(gr, cr, law) for gr, cr in zip(g, c)]
+
+
+def _moved(extents, residuals, fresh, gap, before):
+    """The next tips of one row: each by the secant of its last two residuals (``before``: the
+    previous extents and residuals of the row), else where the gap crosses η (``fresh``)."""
+    moved = []
+    for j, ((lo, hi), (r_lo, r_hi), (f_lo, f_hi)) in enumerate(zip(extents, residuals, fresh)):
+        old = None if before is None else before[j]
+        new_lo = _secant(lo, r_lo, None if old is None else (old[0][0], old[1][0]),
+                         _interp(gap, lo + 0.5) - _interp(gap, lo - 0.5))
+        new_hi = _secant(hi, r_hi, None if old is None else (old[0][1], old[1][1]),
+                         _interp(gap, hi + 0.5) - _interp(gap, hi - 0.5))
+        moved.append((f_lo if new_lo is None else new_lo, f_hi if new_hi is None else new_hi))
+    return moved
+
+
 def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, penetration=None,
                    start=None, start_penetration=None, start_contact=None,
                    tolerance: float = 1e-10, krylov_tolerance: float = 1e-10,
                    max_updates: int = 100, max_iterations: int = 20000,
-                   max_sets: int = MAX_SETS, workers: int = 1) -> CohesiveSolution:
+                   max_sets: int = MAX_SETS, workers: int = 1,
+                   rows: int = 1) -> CohesiveSolution:
     """The equilibrium of the cohesive law on one grid (module docstring).
 
     Unknowns are the tips of the runs of cells in range (:func:`tip_positions`), continuous,
@@ -224,10 +246,19 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         A contact set to start from (a warm start: another method's contacts) instead of the
         cells in range under ``start``: the first solve puts the cohesive stress on these
         cells only, and the zones grow from them.
+    rows : int
+        The cells are ``rows`` grid rows of equal length, one after the other (an areal grid,
+        flat row by row): each row's runs have their own tips along the row, the cells
+        across the rows are whole (one row: the 1D grid).
     """
     lam = circulant.eigenvalues
     r = np.asarray(heights, dtype=float)
     n = r.size
+    width = n // rows
+
+    def by_row(values):
+        return np.asarray(values).reshape(rows, width)
+
     load = mean_pressure is not None
     p = np.asarray(start, dtype=float).copy()
     u = convolve(p, lam, workers)
@@ -240,18 +271,19 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
     g = u - (r - 1.0 + delta)
     if start_contact is None:
         contact = p > 0.0
-        extents = tip_positions(g, contact, law)
+        extents = _row_tips(g, contact, law, rows)
     else:
         contact = np.asarray(start_contact, bool)
-        extents = ([(-0.5, n - 0.5)] if contact.all() else
-                   [(first - 0.5, last + 0.5) for first, last in _runs(contact)])
-    before: list | None = None    # the previous solve's extents and tip residuals
+        extents = [[(-0.5, width - 0.5)] if c.all() else
+                   [(first - 0.5, last + 0.5) for first, last in _runs(c)]
+                   for c in by_row(contact)]
+    before: list | None = None    # the previous solve's extents and tip residuals, per row
     iterations = applications = 0
     sol: GridSolution | None = None
     converged = False
     message = f"the cohesive tips did not settle in {max_sets} solves"
     for k in range(1, max_sets + 1):
-        w = tip_weights(extents, n)
+        w = np.concatenate([tip_weights(e, width) for e in extents])
         shifted = ranged_heights(r, w, law, lam, workers)
         q0 = np.maximum(p + law.strength * w, 0.0)
         if not q0.any():
@@ -284,26 +316,22 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         if not sol.converged:
             message = f"inner solve: {sol.message}"
             break
-        fresh = tip_positions(g, contact, law)
-        if not _matches(extents, fresh, n):
+        fresh = _row_tips(g, contact, law, rows)
+        if not all(_matches(old, new, width) for old, new in zip(extents, fresh)):
             extents, before = fresh, None           # the runs changed: start the tips again
             continue
-        residuals = [(_interp(g, lo) - law.opening, _interp(g, hi) - law.opening)
-                     for lo, hi in extents]
-        if max(abs(v) for pair in residuals for v in pair) <= 10.0 * tolerance:
+        rows_g = by_row(g)
+        residuals = [[(_interp(gr, lo) - law.opening, _interp(gr, hi) - law.opening)
+                      for lo, hi in ext] for gr, ext in zip(rows_g, extents)]
+        if max((abs(v) for row in residuals for pair in row for v in pair),
+               default=0.0) <= 10.0 * tolerance:
             converged = True
             break
-        moved = []
-        for j, ((lo, hi), (r_lo, r_hi), (f_lo, f_hi)) in enumerate(zip(extents, residuals,
-                                                                        fresh)):
-            old = None if before is None else before[j]
-            new_lo = _secant(lo, r_lo, None if old is None else (old[0][0], old[1][0]),
-                             _interp(g, lo + 0.5) - _interp(g, lo - 0.5))
-            new_hi = _secant(hi, r_hi, None if old is None else (old[0][1], old[1][1]),
-                             _interp(g, hi + 0.5) - _interp(g, hi - 0.5))
-            moved.append((f_lo if new_lo is None else new_lo, f_hi if new_hi is None else new_hi))
-        before = list(zip(extents, residuals))
-        extents = moved
+        moved_rows = [_moved(ext, res, fr, gr, None if before is None else before[i])
+                      for i, (ext, res, fr, gr) in enumerate(zip(extents, residuals, fresh,
+                                                                  rows_g))]
+        before = [list(zip(ext, res)) for ext, res in zip(extents, residuals)]
+        extents = moved_rows
     res = law_violation(p, g, contact, w, law)
     if converged:
         message = (f"converged: {int(contact.sum())} contact and "
