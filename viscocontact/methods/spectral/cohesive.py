@@ -198,6 +198,11 @@ def _row_tips(gap, contact, law: GridLaw, rows: int) -> list:
     return [tip_positions(gr, cr, law) for gr, cr in zip(g, c)]
 
 
+def _whole(extents, points: int) -> bool:
+    """Whether a row is in range from end to end (one run over every cell: no tips)."""
+    return len(extents) == 1 and extents[0][1] - extents[0][0] >= points
+
+
 def _moved(extents, residuals, fresh, gap, before):
     """The next tips of one row: each by the secant of its last two residuals (``before``: the
     previous extents and residuals of the row), else where the gap crosses η (``fresh``)."""
@@ -317,20 +322,27 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
             message = f"inner solve: {sol.message}"
             break
         fresh = _row_tips(g, contact, law, rows)
-        if not all(_matches(old, new, width) for old, new in zip(extents, fresh)):
+        same = [_matches(old, new, width) or (_whole(old, width) and _whole(new, width))
+                for old, new in zip(extents, fresh)]
+        if not any(same):
             extents, before = fresh, None           # the runs changed: start the tips again
             continue
         rows_g = by_row(g)
-        residuals = [[(_interp(gr, lo) - law.opening, _interp(gr, hi) - law.opening)
-                      for lo, hi in ext] for gr, ext in zip(rows_g, extents)]
-        if max((abs(v) for row in residuals for pair in row for v in pair),
-               default=0.0) <= 10.0 * tolerance:
+        # a row whose runs changed starts its tips again; the others move theirs by secants
+        residuals = [None if not ok else [] if _whole(ext, width) else
+                     [(_interp(gr, lo) - law.opening, _interp(gr, hi) - law.opening)
+                      for lo, hi in ext]
+                     for gr, ext, ok in zip(rows_g, extents, same)]
+        if all(same) and max((abs(v) for row in residuals if row is not None
+                              for pair in row for v in pair), default=0.0) <= 10.0 * tolerance:
             converged = True
             break
-        moved_rows = [_moved(ext, res, fr, gr, None if before is None else before[i])
+        moved_rows = [fr if not res else
+                      _moved(ext, res, fr, gr, None if before is None else before[i])
                       for i, (ext, res, fr, gr) in enumerate(zip(extents, residuals, fresh,
                                                                   rows_g))]
-        before = [list(zip(ext, res)) for ext, res in zip(extents, residuals)]
+        before = [None if res is None else list(zip(ext, res))
+                  for ext, res in zip(extents, residuals)]
         extents = moved_rows
     res = law_violation(p, g, contact, w, law)
     if converged:
