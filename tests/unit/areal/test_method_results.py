@@ -83,3 +83,19 @@ def test_a_band_across_the_cell_percolates():
     stats = patch_statistics(m)
     assert stats.percolating == 1 and np.isnan(stats.orientations[0])
     assert patch_statistics(np.zeros((8, 8), bool)).summary()["count"] == 0
+
+
+def test_contact_images_are_written(tmp_path):
+    pytest.importorskip("matplotlib")
+    from viscocontact.areal.method import ArealSpectral
+    from viscocontact.areal.plots import plot_contact
+    from viscocontact.areal.problem import ArealProblem
+    from viscocontact.rheology import Elastic
+
+    x = np.arange(32) * TWO_PI / 32
+    h = 0.1 * (np.cos(x)[None, :] + np.cos(2 * x)[:, None])
+    prob = ArealProblem(surface=h, rheology=Elastic(), mean_pressure=0.05)
+    path = plot_contact(ArealSpectral().solve(prob, fields=True), tmp_path / "contact.png")
+    assert path.stat().st_size > 1000
+    with pytest.raises(ValueError, match="fields=True"):
+        plot_contact(ArealSpectral().solve(prob), tmp_path / "none.png")
