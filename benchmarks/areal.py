@@ -100,8 +100,13 @@ def main(argv=None) -> None:
         cmd = [sys.executable, __file__, "--one", str(n), "--zeta", str(args.zeta),
                "--load", str(args.load), "--workers", str(args.workers),
                "--q-max", str(args.q_max), "--repeats", str(args.repeats)]
-        row = json.loads(subprocess.run(cmd, check=True, capture_output=True,
-                                        text=True).stdout.splitlines()[-1])
+        done = subprocess.run(cmd, capture_output=True, text=True)
+        if done.returncode != 0:
+            why = (done.stderr.strip().splitlines() or ["no output"])[-1]
+            rows.append({"points": n, "error": why})
+            print(f"{n:>5}×{n:<5} failed: {why}", flush=True)
+            continue
+        row = json.loads(done.stdout.splitlines()[-1])
         rows.append(row)
         per = ", ".join(f"{g['points'][0]}: {g['iterations']}/{g['applications']}"
                         for g in row["grids"])
