@@ -158,9 +158,10 @@ class ArealSpectral:
         basis = 0.0 if symmetric else 2 * RESTART * 8 * PLANNED_CONTACT * cells
         return float(BYTES_PER_CELL * cells + basis)
 
-    def plan(self, problem: ArealProblem) -> tuple:
-        """The decisions of a solve as :class:`~viscocontact.plan.PlanStep` records."""
-        from ..plan import PlanStep
+    def plan(self, problem: ArealProblem):
+        """The decisions of a solve (grids, memory, solver, adhesion, estimate) as a
+        :class:`~viscocontact.plan.SolvePlan` (``str()`` gives one line per decision)."""
+        from ..plan import PlanStep, SolvePlan
 
         nx, ny = self.grid_of(problem)
         kernel = problem.areal_kernel()
@@ -182,7 +183,7 @@ class ArealSpectral:
                         f"UNDER-RESOLVED: fewer than {CELLS_PER_ZONE:g} cells per zone; the "
                         f"zone needs {int(np.ceil(CELLS_PER_ZONE * TWO_PI / law.zone))} cells "
                         "a side")),)
-        return (
+        return SolvePlan(steps=(
             PlanStep(stage="method", choice="areal spectral: uniform 2D grid, rfft2 products",
                      reason="adhesionless areal scene" if law is None else
                             "finite-range cohesive law (wide zones)"),
@@ -192,7 +193,7 @@ class ArealSpectral:
                             "points" if self.points else "default 256 per side"),
             PlanStep(stage="memory", choice=f"{need / 1e6:.0f} MB planned",
                      reason=f"limit {self.max_memory / 1e6:.0f} MB; {BYTES_PER_CELL} B per "
-                            "cell" + ("" if not viscous else f" + GMRES basis of {RESTART} "
+                            "cell" + ("" if not viscous else f" + GMRES basis and directions, 2×{RESTART} "
                                       f"vectors on {PLANNED_CONTACT:.0%} of the cells")),
             PlanStep(stage="solver", choice="active set + GMRES" if viscous else
                      "Polonsky-Keer conjugate gradients",
@@ -200,7 +201,7 @@ class ArealSpectral:
                             "symmetric operator"),
             PlanStep(stage="estimate", choice="Richardson on the area and μ between the two "
                                               "finest grids", reason=f"tolerance "
-                                                                     f"{self.tolerance:g}"))
+                                                                     f"{self.tolerance:g}")))
 
     # ---- the solve ---------------------------------------------------------------------------
     def solve(self, problem: ArealProblem, *, fields: bool = False) -> ContactResult:

@@ -131,7 +131,8 @@ def test_bad_problems_name_the_field(kw, field):
 def test_memory_is_planned_and_a_scene_too_big_is_refused():
     method = ArealSpectral(max_memory=1e8)
     prob = ArealProblem(surface=_Bumps(), rheology=SLS, zeta=1.0, mean_pressure=0.1)
-    plan = {step.stage: step for step in method.plan(prob)}
+    plan = {step.stage: step for step in method.plan(prob).steps}
+    assert "MB planned" in str(method.plan(prob))
     assert "MB planned" in plan["memory"].choice and "active set" in plan["solver"].choice
     with pytest.raises(ValidationError, match=r"ArealSpectral.max_memory .* 2048×2048"):
         ArealSpectral(points=2048, max_memory=1e8).solve(prob)
@@ -159,7 +160,7 @@ def test_an_extruded_profile_with_maugis_dugdale_is_the_1d_solution(zeta):
     assert r2.friction == pytest.approx(r1.friction, abs=5e-9)
     # the zone spans 20 cells of 512: the result and the plan say it is under-resolved
     assert any("under-resolved" in e for e in r2.extras["events"])
-    plan = {step.stage: step for step in ArealSpectral().plan(two)}
+    plan = {step.stage: step for step in ArealSpectral().plan(two).steps}
     assert "UNDER-RESOLVED" in plan["adhesion"].reason
 
 
