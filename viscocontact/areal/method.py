@@ -193,8 +193,9 @@ class ArealSpectral:
                             "points" if self.points else "default 256 per side"),
             PlanStep(stage="memory", choice=f"{need / 1e6:.0f} MB planned",
                      reason=f"limit {self.max_memory / 1e6:.0f} MB; {BYTES_PER_CELL} B per "
-                            "cell" + ("" if not viscous else f" + GMRES basis and directions, 2×{RESTART} "
-                                      f"vectors on {PLANNED_CONTACT:.0%} of the cells")),
+                            "cell" + ("" if not viscous else
+                                      f" + GMRES basis and directions, 2×{RESTART} vectors on "
+                                      f"{PLANNED_CONTACT:.0%} of the cells")),
             PlanStep(stage="solver", choice="active set + GMRES" if viscous else
                      "Polonsky-Keer conjugate gradients",
                      reason="viscoelastic operator (not symmetric)" if viscous else
