@@ -261,6 +261,7 @@ class ArealSpectral:
         previous, last, errors = None, None, (np.inf, np.inf)
         iterations = applications = 0
         start = None
+        m2: float | None = None
         for gx, gy in self.ladder(nx, ny):
             begun = time.perf_counter()
             level = self._level(fine, amplitude, kernel, nx, ny, gx, gy)
@@ -288,8 +289,9 @@ class ArealSpectral:
             if not sol.converged:
                 break
             if previous is not None:
-                change = _changes(previous, current, _m2(fine, kernel, amplitude),
-                                  self.friction_floor)
+                if m2 is None:
+                    m2 = _m2(fine, kernel)
+                change = _changes(previous, current, m2, self.friction_floor)
                 errors = estimate(change, last)
                 last = change
             previous = current
@@ -308,7 +310,8 @@ class ArealSpectral:
                 extras["events"].append(
                     f"the cohesive zone q0a0 = {law.zone:.3g} spans {cells:.1f} cells (fewer "
                     f"than {CELLS_PER_ZONE:g}): under-resolved along x")
-        result = self._assemble(problem, kernel, current, amplitude, fine, iterations,
+        result = self._assemble(problem, kernel, current, amplitude,
+                                _m2(fine, kernel) if m2 is None else m2, iterations,
                                 applications, fields, common, law)
         extras["seconds"] = time.perf_counter() - started
         return result
@@ -375,7 +378,7 @@ class ArealSpectral:
                                   "a finite-range law with a cohesive form (maugis-dugdale)")
         return GridLaw(strength=float(law[0]), opening=float(law[1]), zone=float(law[2]))
 
-    def _assemble(self, problem, kernel: ArealKernel, current: Measured, amplitude, fine,
+    def _assemble(self, problem, kernel: ArealKernel, current: Measured, amplitude, m2: float,
                   iterations, applications, fields, common,
                   law: GridLaw | None = None) -> ContactResult:
         level, sol, extras = current.level, current.solution, common["extras"]
@@ -387,7 +390,6 @@ class ArealSpectral:
         weights = kernel.dissipation_weights(level.nx, level.ny)
         power = amplitude * _power(p.reshape(shape), weights, workers)
         stats = patch_statistics(loaded.reshape(shape), kernel.aspect, kernel.direction)
-        m2 = _m2(fine, kernel, amplitude)
         extras.update(area_fraction=current.area / TWO_PI, mean_gap=float(gap.mean()),
                       dissipated_power=power, friction_dissipation=power / pm,
                       patches=stats.summary(), solver=sol.solver, amplitude=amplitude)
@@ -444,9 +446,8 @@ def _changes(coarse: Measured, fine: Measured, m2: float, floor: float) -> tuple
     return float(d_area), float(d_mu) if np.isfinite(d_mu) else 0.0
 
 
-def _m2(fine: np.ndarray, kernel: ArealKernel, amplitude: float) -> float:
+def _m2(fine: np.ndarray, kernel: ArealKernel) -> float:
     """Mean square slope of ``q0 h`` along the sliding direction (spectral derivative)."""
-    del amplitude
     ny, nx = fine.shape
     spec = np.fft.rfft2(fine)
     qx = np.arange(nx // 2 + 1)[None, :]
