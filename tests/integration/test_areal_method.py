@@ -174,3 +174,27 @@ def test_maugis_dugdale_on_a_self_affine_surface():
     assert r.extras["cohesive"]["cohesive_cells"] > 0 and np.mean(p) == pytest.approx(0.5)
     assert r.extras["area_fraction"] > 1.1 * bare.extras["area_fraction"]
     assert r.friction == pytest.approx(r.extras["friction_dissipation"], rel=1e-2)
+
+
+def test_pull_off_of_a_cap_in_the_dmt_limit():
+    """Maugis-Dugdale on one paraboloid cap per cell at Maugis's λ = 0.05 (range h̃0 = 0.3, γ̃ =
+    2.4e-4, R = 4): the largest tension over a scan of penetrations is Derjaguin's
+    ``2πRΔγ`` within 2 % (measured 0.992 of it at 128², near Δ̃ = -0.005, with the cohesive
+    zone alone or a contact of a few cells: the rigid limit's force ``2πRσ0(h0 - s)`` falls
+    off linearly with the separation on the other side)."""
+    from viscocontact.adhesion import MaugisDugdale
+
+    n, radius, h0, gamma = 128, 4.0, 0.3, 2.4e-4
+    md = MaugisDugdale(gamma=gamma, range=h0)
+    lam = 2 * (np.pi * gamma / h0) * (radius / (np.pi**2 * gamma * 16 / 9)) ** (1 / 3)
+    assert lam == pytest.approx(0.05, abs=2e-3)          # σ0/E* = πγ̃/h̃0, Δγ/E* = πγ̃
+    h = _cap(n, radius)
+    amplitude = (h - h.mean()).max()
+    dmt = 2 * np.pi * radius * np.pi * gamma               # 2πRΔγ/E*, q0 = 1
+    loads = []
+    for d in np.arange(-0.008, -0.0015, 0.001):
+        r = ArealSpectral().solve(ArealProblem(surface=h, rheology=Elastic(), penetration=d,
+                                               adhesion=md))
+        assert r.converged
+        loads.append(r.mean_pressure * amplitude / 2 * TWO_PI**2)   # P/E*
+    assert -min(loads) == pytest.approx(dmt, rel=2e-2)
