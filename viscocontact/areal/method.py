@@ -67,6 +67,7 @@ class Level:
     heights: np.ndarray        # r̃ = q0 h/Λ̃, flat (row by row)
     slope: np.ndarray          # ∂(q0 h)/∂s̃ along the sliding direction, per cell, flat
     circulant: Circulant
+    direction: float = 0.0     # the sliding direction, radians from x̃
 
 
 @attrs.frozen(kw_only=True, eq=False)
@@ -329,7 +330,7 @@ class ArealSpectral:
         if kernel.direction != 0.0:
             slope = slope + math.sin(kernel.direction) * cell_rise(fine, step, axis=0) / hy
         return Level(nx=gx, ny=gy, heights=heights.ravel(), slope=slope.ravel(),
-                     circulant=kernel.circulant(gx, gy))
+                     circulant=kernel.circulant(gx, gy), direction=kernel.direction)
 
     def _measure(self, level: Level, sol: GridSolution, law: GridLaw | None = None,
                  contact=None, weights=None) -> Measured:
@@ -342,7 +343,8 @@ class ArealSpectral:
             shifted = p
         else:        # the Maugis-Dugdale edge has the adhesionless field of p + σ̃0
             shifted = np.where(contact, p + law.strength, 0.0)
-        area = TWO_PI * area_fraction(shifted.reshape(shape), gap.reshape(shape))
+        area = TWO_PI * area_fraction(shifted.reshape(shape), gap.reshape(shape),
+                                      level.direction)
         return Measured(level=level, solution=sol, gap=gap, area=area,
                         friction=friction(p, level.slope), contact=np.asarray(contact, bool),
                         weights=weights)

@@ -4,11 +4,12 @@ All functions take grid fields of shape ``(ny, nx)`` on the cell ``[0, 2π) × [
 (cells of ``hx = 2π/nx`` by ``hy = 2π·aspect/ny`` centred at the samples) in the units of
 :class:`~viscocontact.areal.problem.ArealProblem`.
 
-* Area (:func:`row_lengths`): along every grid row (the ``x̃`` direction) the contact's edges are
-  placed to a fraction of a cell from the square-root field at an adhesionless edge, as the 1D
-  spectral method places them (:mod:`viscocontact.methods.spectral.edges`); the area fraction is
-  the mean over the rows of the contact length per row over ``2π`` (the midpoint rule across the
-  rows). A surface extruded along ``y`` has the 1D method's area.
+* Area (:func:`area_fraction`): along the grid rows and columns the contact's edges are placed
+  to a fraction of a cell from the square-root field at an adhesionless edge, as the 1D
+  spectral method places them (:mod:`viscocontact.methods.spectral.edges`); each edge's shift
+  counts with the share of the boundary's normal in its direction. A surface extruded along
+  ``y`` has the 1D method's area, one extruded along ``x`` the 1D method's area of its
+  profile in ``y``.
 * Friction (:func:`friction`): ``μ = -<p ∂h/∂s>/<p>`` with ``∂h/∂s`` the slope of the rigid
   surface along the sliding direction (eq. 4.16 in 2D), the rise of each cell from the
   trigonometric interpolant of the heights (exact for a band-limited surface, and equal to the
@@ -47,41 +48,81 @@ def cell_rise(heights: np.ndarray, step: int = 1, axis: int = 1) -> np.ndarray:
     return rise[::step, ::step]
 
 
-def row_lengths(pressure: np.ndarray, gap: np.ndarray, cell: float) -> np.ndarray:
-    """Contact length of every row (shape ``(ny,)``), ``x̃`` units, at most ``2π``.
-
-    A run of at least three loaded cells has its left edge from ``p_first/p_next``
-    (:func:`~viscocontact.methods.spectral.edges.edge_offset`) and its right edge from the gaps
-    of the next two free cells (from the pressures when the next contact leaves fewer than two
-    free cells); a shorter run its cells
-    (:func:`~viscocontact.methods.spectral.edges.contact_edges` row by row).
-    """
+def edge_corrections(pressure: np.ndarray, gap: np.ndarray, axis: int = 1,
+                     reverse: bool = False) -> np.ndarray:
+    """Sub-cell shifts of the contact edges along ``axis``, in cells, at the cells that end a
+    run of at least three loaded cells (zero elsewhere): ``θ - 1/2`` with ``θ`` the edge's
+    offset beyond the outermost loaded centre, the start's from ``p_first/p_next``
+    (:func:`~viscocontact.methods.spectral.edges.edge_offset`) and the end's from the gaps of
+    the next two free cells (from the pressures when the next contact leaves fewer than two
+    free cells), as :func:`~viscocontact.methods.spectral.edges.contact_edges` places them:
+    the start is the trailing edge of a solid sliding along ``+axis`` (``reverse``: along
+    ``-axis``, the roles swapped), whose pressures are clean of the memory's ``x log x``
+    term, the end the leading one, whose gaps are."""
+    if reverse:
+        flipped = edge_corrections(np.flip(pressure, axis), np.flip(gap, axis), axis)
+        return np.flip(flipped, axis)
     p = np.asarray(pressure, dtype=float)
     g = np.asarray(gap, dtype=float)
     loaded = p > 0
 
     def roll(a, s):
-        return np.roll(a, s, axis=1)
+        return np.roll(a, s, axis=axis)
 
     long_start = loaded & ~roll(loaded, 1) & roll(loaded, -1) & roll(loaded, -2)
     long_end = loaded & ~roll(loaded, -1) & roll(loaded, 1) & roll(loaded, 2)
-    extra = np.zeros(p.shape)
     with np.errstate(divide="ignore", invalid="ignore"):
         left = edge_offset(np.where(long_start, p / roll(p, -1), 0.0))
         g1, g2 = roll(g, -1), roll(g, -2)
         by_gap = (roll(p, -2) == 0.0) & (g1 > 0.0) & (g1 < g2)
         right = np.where(by_gap, gap_edge_offset(np.where(by_gap, g1 / g2, 0.0)),
                          edge_offset(np.where(long_end, p / roll(p, 1), 0.0)))
-    extra += np.where(long_start, left - 0.5, 0.0)
-    extra += np.where(long_end, right - 0.5, 0.0)
-    lengths = cell * (loaded.sum(axis=1) + extra.sum(axis=1))
-    return np.minimum(lengths, TWO_PI)
+    return np.where(long_start, left - 0.5, 0.0) + np.where(long_end, right - 0.5, 0.0)
 
 
-def area_fraction(pressure: np.ndarray, gap: np.ndarray) -> float:
-    """The real contact area over the cell's area (:func:`row_lengths`)."""
-    nx = np.shape(pressure)[1]
-    return float(np.mean(row_lengths(pressure, gap, TWO_PI / nx)) / TWO_PI)
+def row_lengths(pressure: np.ndarray, gap: np.ndarray, cell: float) -> np.ndarray:
+    """Contact length of every row (shape ``(ny,)``), ``x̃`` units, at most ``2π``: the 1D
+    method's contacts (:func:`~viscocontact.methods.spectral.edges.contact_edges`) row by row
+    (:func:`edge_corrections` along ``x̃``)."""
+    loaded = np.asarray(pressure) > 0
+    extra = edge_corrections(pressure, gap, axis=1)
+    return np.minimum(cell * (loaded.sum(axis=1) + extra.sum(axis=1)), TWO_PI)
+
+
+def normal_weights(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(cos²φ, sin²φ)`` of the direction ``φ`` of the contact boundary's normal at every
+    cell, from central differences of the contact mask averaged over 3 × 3 cells (periodic);
+    ``(1/2, 1/2)`` where they vanish."""
+    m = np.asarray(mask, dtype=float)
+    s = sum(np.roll(np.roll(m, a, axis=0), b, axis=1) for a in (-1, 0, 1) for b in (-1, 0, 1))
+    gx = np.roll(s, -1, axis=1) - np.roll(s, 1, axis=1)
+    gy = np.roll(s, -1, axis=0) - np.roll(s, 1, axis=0)
+    norm = gx * gx + gy * gy
+    flat = norm == 0.0
+    safe = np.where(flat, 1.0, norm)
+    wx = np.where(flat, 0.5, gx * gx / safe)
+    return wx, 1.0 - wx
+
+
+def area_fraction(pressure: np.ndarray, gap: np.ndarray, direction: float = 0.0) -> float:
+    """The real contact area over the cell's area.
+
+    The loaded cells, plus the sub-cell shifts of the edges along the rows
+    (:func:`edge_corrections` along ``x̃``) and along the columns (along ``ỹ``), each weighted
+    by the share of the boundary's normal in its direction (:func:`normal_weights`): an edge
+    crossed by a row and a column is shifted once. A boundary across the rows (a surface
+    extruded along ``y``) takes the rows' shifts alone, the 1D method's area. ``direction``
+    (radians from ``x̃``) is the sliding direction: it sets which end of a run is the
+    leading edge (:func:`edge_corrections`).
+    """
+    p = np.asarray(pressure, dtype=float)
+    loaded = p > 0
+    if loaded.all() or not loaded.any():
+        return float(loaded.mean())
+    wx, wy = normal_weights(loaded)
+    extra = (np.sum(wx * edge_corrections(p, gap, 1, reverse=np.cos(direction) < 0))
+             + np.sum(wy * edge_corrections(p, gap, 0, reverse=np.sin(direction) < 0)))
+    return float(min(max((loaded.sum() + extra) / p.size, 0.0), 1.0))
 
 
 def friction(pressure: np.ndarray, slope: np.ndarray) -> float:
