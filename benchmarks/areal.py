@@ -5,7 +5,8 @@
 
 The scene of the acceptance run: an isotropic self-affine surface (H = 0.8, wavenumbers 1 to
 ``--q-max`` in units of q0, rms slope 0.1, seed 0; the same surface sampled on every grid) on a
-standard linear solid β = 10 at ζ = 1, adhesionless, load control (p̃∞ = 1: about 10 % contact),
+standard linear solid β = 10 at ζ = 1, adhesionless or with ``--adhesion`` (Maugis-Dugdale),
+load control (p̃∞ = 1: about 14 % contact without adhesion),
 default tolerance. Each size is solved in a fresh process (so its peak resident memory is its
 own), ``--repeats`` times; printed and written per size: wall and CPU seconds (medians), peak
 memory, area fraction, μ, the error estimate, and per grid of the ladder the solver's iterations
@@ -51,13 +52,20 @@ def self_affine(n: int, hurst: float = 0.8, q_max: float = 32.0, seed: int = 0,
     return h * rms_slope / np.sqrt(np.mean(gx**2 + gy**2))
 
 
-def one(n: int, zeta: float, load: float, workers: int, q_max: float, repeats: int) -> dict:
+def one(n: int, zeta: float, load: float, workers: int, q_max: float, repeats: int,
+        adhesion: str | None = None) -> dict:
+    from viscocontact.adhesion import MaugisDugdale
     from viscocontact.areal.method import ArealSpectral
     from viscocontact.areal.problem import ArealProblem
     from viscocontact.rheology import StandardLinearSolid
 
+    md = None
+    if adhesion:
+        gamma, reach = (float(v) for v in adhesion.split(","))
+        md = MaugisDugdale(gamma=gamma, range=reach)
     prob = ArealProblem(surface=self_affine(n, q_max=q_max),
-                        rheology=StandardLinearSolid(beta=10.0), zeta=zeta, mean_pressure=load)
+                        rheology=StandardLinearSolid(beta=10.0), zeta=zeta, mean_pressure=load,
+                        adhesion=md)
     walls, cpus, result = [], [], None
     for _ in range(repeats):
         w, c = time.perf_counter(), time.process_time()
@@ -72,6 +80,7 @@ def one(n: int, zeta: float, load: float, workers: int, q_max: float, repeats: i
             "friction": result.friction,
             "friction_dissipation": result.extras["friction_dissipation"],
             "error_estimate": result.extras["error_estimate"],
+            "adhesion": adhesion or "",
             "patches": result.extras["patches"]["count"],
             "grids": [{k: (list(v) if isinstance(v, tuple) else v) for k, v in g.items()}
                       for g in result.extras["grids"]],
@@ -86,12 +95,14 @@ def main(argv=None) -> None:
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--q-max", type=float, default=32.0)
     ap.add_argument("--repeats", type=int, default=1)
+    ap.add_argument("--adhesion", default="",
+                    help="Maugis-Dugdale 'gamma,range' (γ̃, h̃0), e.g. 1e-4,3e-2; none by default")
     ap.add_argument("--out", default=str(Path(__file__).parent / "results" / "areal.json"))
     ap.add_argument("--one", type=int, help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     if args.one:
         print(json.dumps(one(args.one, args.zeta, args.load, args.workers, args.q_max,
-                             args.repeats)))
+                             args.repeats, args.adhesion or None)))
         return
     rows = []
     print(f"{'cells':>11} {'wall s':>7} {'cpu s':>7} {'MB':>6} {'area':>7} {'mu':>8} "
@@ -99,7 +110,8 @@ def main(argv=None) -> None:
     for n in (int(v) for v in args.sizes.split(",")):
         cmd = [sys.executable, __file__, "--one", str(n), "--zeta", str(args.zeta),
                "--load", str(args.load), "--workers", str(args.workers),
-               "--q-max", str(args.q_max), "--repeats", str(args.repeats)]
+               "--q-max", str(args.q_max), "--repeats", str(args.repeats),
+               "--adhesion", args.adhesion]
         done = subprocess.run(cmd, capture_output=True, text=True)
         if done.returncode != 0:
             why = (done.stderr.strip().splitlines() or ["no output"])[-1]
@@ -119,7 +131,8 @@ def main(argv=None) -> None:
     tmp.write_text(json.dumps({"scene": {"hurst": 0.8, "q_max": args.q_max, "rms_slope": 0.1,
                                          "beta": 10.0, "zeta": args.zeta,
                                          "mean_pressure": args.load,
-                                         "workers": args.workers, "cpus": os.cpu_count()},
+                                         "workers": args.workers, "cpus": os.cpu_count(),
+                                         "adhesion": args.adhesion},
                                "rows": rows}, indent=1))
     tmp.replace(out)
 

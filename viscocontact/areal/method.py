@@ -363,7 +363,8 @@ class ArealSpectral:
             start = np.zeros(level.heights.size)
         solved = cohesive_solve(level.circulant, level.heights, law, mean_pressure=load,
                                 penetration=pen, start=start, start_penetration=start_pen,
-                                rows=level.ny, **self._grid_options())
+                                rows=level.ny, contact_start=True,
+                                **self._grid_options())
         sol = attrs.evolve(solved.solution, iterations=solved.solution.iterations + its,
                            applications=solved.solution.applications + apps)
         return sol, solved.contact, solved.weights

@@ -222,7 +222,7 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
                    tolerance: float = 1e-10, krylov_tolerance: float = 1e-10,
                    max_updates: int = 100, max_iterations: int = 20000,
                    max_sets: int = MAX_SETS, workers: int = 1,
-                   rows: int = 1) -> CohesiveSolution:
+                   rows: int = 1, contact_start: bool = False) -> CohesiveSolution:
     """The equilibrium of the cohesive law on one grid (module docstring).
 
     Unknowns are the tips of the runs of cells in range (:func:`tip_positions`), continuous,
@@ -291,6 +291,8 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         w = np.concatenate([tip_weights(e, width) for e in extents])
         shifted = ranged_heights(r, w, law, lam, workers)
         q0 = np.maximum(p + law.strength * w, 0.0)
+        if contact_start:
+            q0[~contact] = 0.0            # a cell new to a zone is cohesive, not in contact
         if not q0.any():
             q0[int(np.argmax(shifted))] = 1.0
         control: dict[str, Any] = (
@@ -301,7 +303,8 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
                        **control)
         counts = []
         sol = None
-        if k > 1 or circulant.symmetric:      # from the last solution: the tips moved a little
+        if k > 1 or circulant.symmetric or contact_start:
+            # from the last solution: the tips moved a little
             sol = grid_solve(circulant, shifted, start_penetration=delta if load else None,
                              **options)
             counts.append(sol)
