@@ -192,7 +192,7 @@ def test_pull_off_of_a_cap_in_the_dmt_limit():
     amplitude = (h - h.mean()).max()
     dmt = 2 * np.pi * radius * np.pi * gamma               # 2πRΔγ/E*, q0 = 1
     loads = []
-    for d in np.arange(-0.008, -0.0015, 0.001):
+    for d in np.arange(-0.007, -0.0025, 0.001):
         r = ArealSpectral().solve(ArealProblem(surface=h, rheology=Elastic(), penetration=d,
                                                adhesion=md))
         assert r.converged

@@ -89,6 +89,17 @@ class ArealKernel:
         Angle ``θ`` (radians) of the sliding direction from the ``x̃`` axis, in ``[-π, π]``.
     aspect : float
         ``L_y/L_x`` of the cell.
+
+    Examples
+    --------
+    Across the sliding direction the solid is relaxed (``K = 1``); along it, at ``ζ → ∞``, a
+    standard linear solid is ``β`` times stiffer:
+
+    >>> from viscocontact.kernels.half_plane import HalfPlane
+    >>> from viscocontact.rheology import StandardLinearSolid
+    >>> k = ArealKernel.prepare(HalfPlane(), StandardLinearSolid(beta=10.0), 1e12)
+    >>> complex(k.multiplier(0.0, 2.0)), round(complex(k.multiplier(2.0, 0.0)).real, 6)
+    ((0.5+0j), 0.05)
     """
 
     prepared: PreparedKernel

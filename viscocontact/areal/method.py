@@ -113,6 +113,22 @@ class ArealSpectral:
         ``μ`` is resolved relative to ``max(|μ|, friction_floor·√m2)``, in ``[0, 1]``.
     residual, krylov_tolerance, max_iterations, max_updates
         As for :class:`~viscocontact.methods.spectral.Spectral`.
+
+    Examples
+    --------
+    One bump per cell, ``0.1·(cos x̃ + cos ỹ)``, on an elastic half-space:
+
+    >>> import numpy as np
+    >>> from viscocontact.areal.problem import ArealProblem
+    >>> from viscocontact.rheology import Elastic
+    >>> x = 2 * np.pi * np.arange(32) / 32
+    >>> bumps = 0.1 * (np.cos(x)[None, :] + np.cos(x)[:, None])
+    >>> r = ArealSpectral().solve(ArealProblem(surface=bumps, rheology=Elastic(),
+    ...                                        mean_pressure=0.05))
+    >>> r.converged, r.n_contacts, r.extras["points"]
+    (True, 1, (32, 32))
+    >>> bool(0.0 < r.extras["area_fraction"] < 0.5), bool(abs(r.friction) < 1e-3)
+    (True, True)
     """
 
     name: ClassVar[str] = "areal-spectral"
