@@ -83,6 +83,20 @@ class Measured:
     weights: np.ndarray | None = None   # share of each cell under a cohesive law's stress
 
 
+@attrs.define(kw_only=True)
+class _Ladder:
+    """The state of a solve's ladder of grids (mutable, private to one solve)."""
+
+    fine: np.ndarray
+    m2: float
+    current: Measured | None = None
+    converged: bool = False
+    last: tuple[float, float] | None = None
+    errors: tuple[float, float] = (np.inf, np.inf)
+    iterations: int = 0
+    applications: int = 0
+
+
 def _points(value):
     if value is None:
         return None
@@ -104,7 +118,10 @@ class ArealSpectral:
         Relative accuracy of the area and ``μ`` the estimate is checked against, ``[1e-6, 0.1]``.
     points : int or (int, int) or None
         Cells ``(nx, ny)`` of the finest grid for a :class:`Surface` (an array surface uses its
-        own); default 256 per side (``ny`` scaled by the aspect).
+        own); ``None``: 256 per side (``ny`` scaled by the aspect), doubled until the estimate
+        meets the tolerance or a side would exceed ``max_points`` or the memory ``max_memory``.
+    max_points : int
+        Most cells a side of an automatically refined grid, ``[64, 65536]``.
     max_memory : float
         Bytes a solve may plan for, ``[1e6, 1e12]``.
     workers : int or None
@@ -135,6 +152,7 @@ class ArealSpectral:
 
     tolerance: float = attrs.field(default=1e-3, validator=in_range(1e-6, 0.1))
     points: tuple[int, int] | None = attrs.field(default=None, converter=_points)
+    max_points: int = attrs.field(default=4096, validator=int_range(64, 1 << 16))
     max_memory: float = attrs.field(default=2e9, validator=in_range(1e6, 1e12))
     workers: int | None = attrs.field(
         default=None, validator=attrs.validators.optional(int_range(1, 1024)))
@@ -275,43 +293,25 @@ class ArealSpectral:
                 full_contact=False, converged=True, status=SolveStatus.NO_CONTACT,
                 message="no contact at this load", residual=0.0, iterations=0,
                 function_evaluations=0, min_gap=np.inf, **common)
-        previous, last, errors = None, None, (np.inf, np.inf)
-        iterations = applications = 0
-        start = None
-        m2: float | None = None
+        ladder = _Ladder(fine=fine, m2=_m2(fine, kernel))
         for gx, gy in self.ladder(nx, ny):
-            begun = time.perf_counter()
-            level = self._level(fine, amplitude, kernel, nx, ny, gx, gy)
-            if previous is not None:
-                start = _refine(previous.solution.pressure, previous.level,
-                                inside=law is None)
-            start_pen = None if previous is None else previous.solution.penetration
-            if law is None:
-                sol = grid_solve(level.circulant, level.heights, mean_pressure=load,
-                                 penetration=pen, start=start, start_penetration=start_pen,
-                                 presolve=start is None, **self._grid_options())
-                current = self._measure(level, sol)
-            else:
-                sol, contact, weights = self._solve_cohesive(level, load, pen, start,
-                                                             start_pen, law)
-                current = self._measure(level, sol, law, contact, weights)
-            iterations += sol.iterations
-            applications += sol.applications
-            extras["events"].append(f"{gx}×{gy} cells: {sol.solver}, {sol.message}")
-            extras["grids"].append({"points": (gx, gy), "solver": sol.solver,
-                                    "iterations": int(sol.iterations),
-                                    "applications": int(sol.applications),
-                                    "area": current.area, "friction": current.friction,
-                                    "seconds": time.perf_counter() - begun})
-            if not sol.converged:
+            if not self._step(ladder, problem, kernel, amplitude, (gx, gy), law, extras):
                 break
-            if previous is not None:
-                if m2 is None:
-                    m2 = _m2(fine, kernel)
-                change = _changes(previous, current, m2, self.friction_floor)
-                errors = estimate(change, last)
-                last = change
-            previous = current
+        # a Surface without given points is refined until the estimate meets the tolerance
+        while (problem.native_points is None and self.points is None and ladder.converged
+               and max(ladder.errors) > self.tolerance):
+            gx, gy = 2 * ladder.fine.shape[1], 2 * ladder.fine.shape[0]
+            if max(gx, gy) > self.max_points or self.memory(gx, gy) > self.max_memory:
+                extras["events"].append(f"estimate {max(ladder.errors):.2g} > tolerance; "
+                                        f"{gx}×{gy} cells exceed max_points or max_memory")
+                break
+            extras["events"].append(f"estimate {max(ladder.errors):.2g} > tolerance: grid "
+                                    "doubled")
+            ladder.fine = problem.heights(gx, gy)
+            self._step(ladder, problem, kernel, amplitude, (gx, gy), law, extras)
+        current, errors, m2 = ladder.current, ladder.errors, ladder.m2
+        assert current is not None, "the ladder has at least one grid"
+        iterations, applications = ladder.iterations, ladder.applications
         error = float(max(errors))
         extras.update(error_estimate=error, points=(current.level.nx, current.level.ny),
                       tolerance_met=bool(error <= self.tolerance),
@@ -327,11 +327,50 @@ class ArealSpectral:
                 extras["events"].append(
                     f"the cohesive zone q0a0 = {law.zone:.3g} spans {cells:.1f} cells (fewer "
                     f"than {CELLS_PER_ZONE:g}): under-resolved along x")
-        result = self._assemble(problem, kernel, current, amplitude,
-                                _m2(fine, kernel) if m2 is None else m2, iterations,
+        result = self._assemble(problem, kernel, current, amplitude, m2, iterations,
                                 applications, fields, common, law)
         extras["seconds"] = time.perf_counter() - started
         return result
+
+    def _step(self, ladder: "_Ladder", problem, kernel: ArealKernel, amplitude: float,
+              points: tuple[int, int], law: GridLaw | None, extras: dict) -> bool:
+        """Solve the next grid of ``ladder`` (from the previous grid's solution) and update its
+        estimate; False when the grid solve failed."""
+        begun = time.perf_counter()
+        gx, gy = points
+        ny, nx = ladder.fine.shape
+        level = self._level(ladder.fine, amplitude, kernel, nx, ny, gx, gy)
+        load, pen = problem.mean_pressure, problem.penetration
+        previous = ladder.current
+        start = None if previous is None else _refine(previous.solution.pressure,
+                                                       previous.level, inside=law is None)
+        start_pen = None if previous is None else previous.solution.penetration
+        if law is None:
+            sol = grid_solve(level.circulant, level.heights, mean_pressure=load,
+                             penetration=pen, start=start, start_penetration=start_pen,
+                             presolve=start is None, **self._grid_options())
+            current = self._measure(level, sol)
+        else:
+            sol, contact, weights = self._solve_cohesive(level, load, pen, start, start_pen,
+                                                         law)
+            current = self._measure(level, sol, law, contact, weights)
+        ladder.iterations += sol.iterations
+        ladder.applications += sol.applications
+        extras["events"].append(f"{gx}×{gy} cells: {sol.solver}, {sol.message}")
+        extras["grids"].append({"points": (gx, gy), "solver": sol.solver,
+                                "iterations": int(sol.iterations),
+                                "applications": int(sol.applications),
+                                "area": current.area, "friction": current.friction,
+                                "seconds": time.perf_counter() - begun})
+        ladder.current = current
+        ladder.converged = bool(sol.converged)
+        if not sol.converged:
+            return False
+        if previous is not None:
+            change = _changes(previous, current, ladder.m2, self.friction_floor)
+            ladder.errors = estimate(change, ladder.last)
+            ladder.last = change
+        return True
 
     def _grid_options(self) -> dict:
         return dict(tolerance=self.residual, krylov_tolerance=self.krylov_tolerance,

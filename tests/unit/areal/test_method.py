@@ -190,3 +190,25 @@ def test_sliding_along_y_on_the_turned_surface_is_sliding_along_x(flip, directio
     assert r1.area == pytest.approx(r0.area, rel=5e-5)
     assert r1.friction == pytest.approx(r0.friction, rel=5e-5)
     assert r1.penetration == pytest.approx(r0.penetration, rel=5e-5)
+
+
+class _Cap(Surface):
+    """One paraboloid cap per cell, radius 4."""
+
+    def heights(self, nx, ny):
+        x, y = self.grid(nx, ny)
+        h = -((x - np.pi) ** 2 + (y - np.pi) ** 2) / 8.0
+        return h - h.mean()
+
+
+def test_a_surface_is_refined_until_the_estimate_meets_the_tolerance():
+    """From 256² (estimate 3.9e-3, measured) to 512² (1.5e-3) for a tolerance of 3e-3; with
+    max_points = 256 the solve stops at 256² and says the tolerance is not met."""
+    prob = ArealProblem(surface=_Cap(), rheology=Elastic(), mean_pressure=0.002)
+    r = ArealSpectral(tolerance=3e-3).solve(prob)
+    assert r.extras["points"] == (512, 512) and r.extras["tolerance_met"]
+    assert any("grid doubled" in e for e in r.extras["events"])
+    capped = ArealSpectral(tolerance=3e-3, max_points=256).solve(prob)
+    assert capped.extras["points"] == (256, 256) and not capped.extras["tolerance_met"]
+    assert "tolerance 0.003 not met" in capped.message
+    assert capped.extras["error_estimate"] > r.extras["error_estimate"]
