@@ -195,49 +195,11 @@ class ArealSpectral:
 
     def plan(self, problem: ArealProblem):
         """The decisions of a solve (grids, memory, solver, adhesion, estimate) as a
-        :class:`~viscocontact.plan.SolvePlan` (``str()`` gives one line per decision)."""
-        from ..plan import PlanStep, SolvePlan
+        :class:`~viscocontact.plan.SolvePlan` (``str()`` gives one line per decision;
+        :func:`~viscocontact.areal.planning.plan_steps`)."""
+        from .planning import plan_steps
 
-        nx, ny = self.grid_of(problem)
-        kernel = problem.areal_kernel()
-        viscous = bool(np.any(kernel.prepared.all_weights > 0) and 0 < problem.zeta
-                       and np.isfinite(problem.zeta))
-        need = self.memory(nx, ny, symmetric=not viscous)
-        grids = " → ".join(f"{a}×{b}" for a, b in self.ladder(nx, ny))
-        law = self.law(problem, float(np.max(problem.heights(nx, ny))))
-        cohesive: tuple = ()
-        if law is not None:
-            cells = zone_cells(law, nx)
-            cohesive = (PlanStep(
-                stage="adhesion",
-                choice=f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the "
-                       f"gap is below η = {law.opening:.4g}; tips along the rows; {cells:.1f} "
-                       f"cells per quasi-static zone q0a0 = {law.zone:.3g}",
-                reason=(f"at least {CELLS_PER_ZONE:g} cells per zone wanted" if
-                        cells >= CELLS_PER_ZONE else
-                        f"UNDER-RESOLVED: fewer than {CELLS_PER_ZONE:g} cells per zone; the "
-                        f"zone needs {int(np.ceil(CELLS_PER_ZONE * TWO_PI / law.zone))} cells "
-                        "a side")),)
-        return SolvePlan(steps=(
-            PlanStep(stage="method", choice="areal spectral: uniform 2D grid, rfft2 products",
-                     reason="adhesionless areal scene" if law is None else
-                            "finite-range cohesive law (wide zones)"),
-            *cohesive,
-            PlanStep(stage="grid", choice=f"{grids} cells (nested iteration)",
-                     reason="the array's own grid" if problem.native_points else
-                            "points" if self.points else "default 256 per side"),
-            PlanStep(stage="memory", choice=f"{need / 1e6:.0f} MB planned",
-                     reason=f"limit {self.max_memory / 1e6:.0f} MB; {BYTES_PER_CELL} B per "
-                            "cell" + ("" if not viscous else
-                                      f" + GMRES basis and directions, 2×{RESTART} vectors on "
-                                      f"{PLANNED_CONTACT:.0%} of the cells")),
-            PlanStep(stage="solver", choice="active set + GMRES" if viscous else
-                     "Polonsky-Keer conjugate gradients",
-                     reason="viscoelastic operator (not symmetric)" if viscous else
-                            "symmetric operator"),
-            PlanStep(stage="estimate", choice="Richardson on the area and μ between the two "
-                                              "finest grids", reason=f"tolerance "
-                                                                     f"{self.tolerance:g}")))
+        return plan_steps(self, problem)
 
     # ---- the solve ---------------------------------------------------------------------------
     def solve(self, problem: ArealProblem, *, fields: bool = False) -> ContactResult:
@@ -317,18 +279,9 @@ class ArealSpectral:
                       tolerance_met=bool(error <= self.tolerance),
                       estimates={"area": float(errors[0]), "friction": float(errors[1])})
         if law is not None:
-            cells = zone_cells(law, current.level.nx)
-            extras["cohesive"] = {
-                "strength": law.strength, "opening": law.opening, "zone": law.zone,
-                "cells_per_zone": cells, "cohesive_cells": int(np.sum(
-                    (current.weights > 0) & ~current.contact)) if current.weights is not None
-                else 0}
-            if cells < CELLS_PER_ZONE:
-                extras["events"].append(
-                    f"the cohesive zone q0a0 = {law.zone:.3g} spans {cells:.1f} cells (fewer "
-                    f"than {CELLS_PER_ZONE:g}): under-resolved along x")
-        result = self._assemble(problem, kernel, current, amplitude, m2, iterations,
-                                applications, fields, common, law)
+            _cohesive_extras(law, current, extras)
+        result = _assemble(self, kernel, current, amplitude, m2, (iterations, applications),
+                           fields, common, law)
         extras["seconds"] = time.perf_counter() - started
         return result
 
@@ -436,46 +389,61 @@ class ArealSpectral:
                                   "a finite-range law with a cohesive form (maugis-dugdale)")
         return GridLaw(strength=float(law[0]), opening=float(law[1]), zone=float(law[2]))
 
-    def _assemble(self, problem, kernel: ArealKernel, current: Measured, amplitude, m2: float,
-                  iterations, applications, fields, common,
-                  law: GridLaw | None = None) -> ContactResult:
-        level, sol, extras = current.level, current.solution, common["extras"]
-        shape = (level.ny, level.nx)
-        p, gap = sol.pressure, current.gap
-        loaded = current.contact
-        pm = float(p.mean())
-        workers = self.workers or 1
-        weights = kernel.dissipation_weights(level.nx, level.ny)
-        power = amplitude * _power(p.reshape(shape), weights, workers)
-        stats = patch_statistics(loaded.reshape(shape), kernel.aspect, kernel.direction)
-        extras.update(area_fraction=current.area / TWO_PI, mean_gap=float(gap.mean()),
-                      dissipated_power=power, friction_dissipation=power / pm,
-                      patches=stats.summary(), solver=sol.solver, amplitude=amplitude)
-        fld = None
-        if fields:
-            y, x = np.mgrid[0:level.ny, 0:level.nx]
-            fld = {"x": x * TWO_PI / level.nx, "y": y * TWO_PI * kernel.aspect / level.ny,
-                   "heights": level.heights.reshape(shape), "pressure": p.reshape(shape),
-                   "displacement": (gap + level.heights - 1.0 + sol.penetration).reshape(shape),
-                   "gap": gap.reshape(shape), "patches": stats}
-        full = bool(loaded.all())
-        mu = current.friction
-        return ContactResult(
-            area=current.area, mean_pressure=pm, penetration=float(sol.penetration),
-            friction=mu, reduced_friction=mu / math.sqrt(m2) if m2 > 0 else np.nan,
-            n_contacts=1 if full else stats.count, edges=np.zeros((0, 2)), full_contact=full,
-            converged=bool(sol.converged),
-            status=SolveStatus.CONVERGED if sol.converged else SolveStatus.NOT_CONVERGED,
-            message=("converged" if sol.converged else f"grid solve did not converge: "
-                     f"{sol.message}") + ("" if extras["tolerance_met"] else
-                                          f"; tolerance {self.tolerance:g} not met (estimate "
-                                          f"{extras['error_estimate']:.2g})"),
-            residual=(violation(gap, loaded) if law is None else
-                      law_violation(p, gap, loaded, current.weights, law)),
-            iterations=int(iterations),
-            function_evaluations=int(applications),
-            min_gap=float(np.min(gap[~loaded])) if (~loaded).any() else 0.0,
-            fields=fld, **common)
+def _assemble(method: ArealSpectral, kernel: ArealKernel, current: Measured, amplitude: float,
+              m2: float, counts: tuple[int, int], fields: bool, common: dict,
+              law: GridLaw | None = None) -> ContactResult:
+    """The :class:`ContactResult` of the finest grid's solution, its extras and fields."""
+    level, sol, extras = current.level, current.solution, common["extras"]
+    shape = (level.ny, level.nx)
+    p, gap = sol.pressure, current.gap
+    loaded = current.contact
+    pm = float(p.mean())
+    workers = method.workers or 1
+    weights = kernel.dissipation_weights(level.nx, level.ny)
+    power = amplitude * _power(p.reshape(shape), weights, workers)
+    stats = patch_statistics(loaded.reshape(shape), kernel.aspect, kernel.direction)
+    extras.update(area_fraction=current.area / TWO_PI, mean_gap=float(gap.mean()),
+                  dissipated_power=power, friction_dissipation=power / pm,
+                  patches=stats.summary(), solver=sol.solver, amplitude=amplitude)
+    fld = None
+    if fields:
+        y, x = np.mgrid[0:level.ny, 0:level.nx]
+        fld = {"x": x * TWO_PI / level.nx, "y": y * TWO_PI * kernel.aspect / level.ny,
+               "heights": level.heights.reshape(shape), "pressure": p.reshape(shape),
+               "displacement": (gap + level.heights - 1.0 + sol.penetration).reshape(shape),
+               "gap": gap.reshape(shape), "patches": stats}
+    full = bool(loaded.all())
+    mu = current.friction
+    return ContactResult(
+        area=current.area, mean_pressure=pm, penetration=float(sol.penetration),
+        friction=mu, reduced_friction=mu / math.sqrt(m2) if m2 > 0 else np.nan,
+        n_contacts=1 if full else stats.count, edges=np.zeros((0, 2)), full_contact=full,
+        converged=bool(sol.converged),
+        status=SolveStatus.CONVERGED if sol.converged else SolveStatus.NOT_CONVERGED,
+        message=("converged" if sol.converged else f"grid solve did not converge: "
+                 f"{sol.message}") + ("" if extras["tolerance_met"] else
+                                      f"; tolerance {method.tolerance:g} not met (estimate "
+                                      f"{extras['error_estimate']:.2g})"),
+        residual=(violation(gap, loaded) if law is None else
+                  law_violation(p, gap, loaded, current.weights, law)),
+        iterations=int(counts[0]), function_evaluations=int(counts[1]),
+        min_gap=float(np.min(gap[~loaded])) if (~loaded).any() else 0.0,
+        fields=fld, **common)
+
+
+def _cohesive_extras(law: GridLaw, current: Measured, extras: dict) -> None:
+    """The law and its zones in ``extras["cohesive"]``; an event when a zone spans fewer than
+    :data:`~viscocontact.methods.spectral.cohesive.CELLS_PER_ZONE` cells."""
+    cells = zone_cells(law, current.level.nx)
+    w = current.weights
+    extras["cohesive"] = {
+        "strength": law.strength, "opening": law.opening, "zone": law.zone,
+        "cells_per_zone": cells,
+        "cohesive_cells": 0 if w is None else int(np.sum((w > 0) & ~current.contact))}
+    if cells < CELLS_PER_ZONE:
+        extras["events"].append(
+            f"the cohesive zone q0a0 = {law.zone:.3g} spans {cells:.1f} cells (fewer than "
+            f"{CELLS_PER_ZONE:g}): under-resolved along x")
 
 
 def _refine(pressure: np.ndarray, level: Level, inside: bool = True) -> np.ndarray:
