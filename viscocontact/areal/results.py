@@ -4,12 +4,12 @@ All functions take grid fields of shape ``(ny, nx)`` on the cell ``[0, 2π) × [
 (cells of ``hx = 2π/nx`` by ``hy = 2π·aspect/ny`` centred at the samples) in the units of
 :class:`~viscocontact.areal.problem.ArealProblem`.
 
-* Area (:func:`area_fraction`): along the grid rows and columns the contact's edges are placed
-  to a fraction of a cell from the square-root field at an adhesionless edge, as the 1D
-  spectral method places them (:mod:`viscocontact.methods.spectral.edges`); each edge's shift
-  counts with the share of the boundary's normal in its direction. A surface extruded along
-  ``y`` has the 1D method's area, one extruded along ``x`` the 1D method's area of its
-  profile in ``y``.
+* Area (:func:`area_fraction`): along the grid lines closest to the sliding direction the
+  contact's edges are placed to a fraction of a cell from the square-root field at an
+  adhesionless edge, as the 1D spectral method places them
+  (:mod:`viscocontact.methods.spectral.edges`); the area fraction is the mean contact length
+  per line over the line's length. A surface extruded across the sliding direction has the 1D
+  method's area.
 * Friction (:func:`friction`): ``μ = -<p ∂h/∂s>/<p>`` with ``∂h/∂s`` the slope of the rigid
   surface along the sliding direction (eq. 4.16 in 2D), the rise of each cell from the
   trigonometric interpolant of the heights (exact for a band-limited surface, and equal to the
@@ -89,40 +89,27 @@ def row_lengths(pressure: np.ndarray, gap: np.ndarray, cell: float) -> np.ndarra
     return np.minimum(cell * (loaded.sum(axis=1) + extra.sum(axis=1)), TWO_PI)
 
 
-def normal_weights(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``(cos²φ, sin²φ)`` of the direction ``φ`` of the contact boundary's normal at every
-    cell, from central differences of the contact mask averaged over 3 × 3 cells (periodic);
-    ``(1/2, 1/2)`` where they vanish."""
-    m = np.asarray(mask, dtype=float)
-    s = sum(np.roll(np.roll(m, a, axis=0), b, axis=1) for a in (-1, 0, 1) for b in (-1, 0, 1))
-    gx = np.roll(s, -1, axis=1) - np.roll(s, 1, axis=1)
-    gy = np.roll(s, -1, axis=0) - np.roll(s, 1, axis=0)
-    norm = gx * gx + gy * gy
-    flat = norm == 0.0
-    safe = np.where(flat, 1.0, norm)
-    wx = np.where(flat, 0.5, gx * gx / safe)
-    return wx, 1.0 - wx
-
-
 def area_fraction(pressure: np.ndarray, gap: np.ndarray, direction: float = 0.0) -> float:
     """The real contact area over the cell's area.
 
-    The loaded cells, plus the sub-cell shifts of the edges along the rows
-    (:func:`edge_corrections` along ``x̃``) and along the columns (along ``ỹ``), each weighted
-    by the share of the boundary's normal in its direction (:func:`normal_weights`): an edge
-    crossed by a row and a column is shifted once. A boundary across the rows (a surface
-    extruded along ``y``) takes the rows' shifts alone, the 1D method's area. ``direction``
-    (radians from ``x̃``) is the sliding direction: it sets which end of a run is the
-    leading edge (:func:`edge_corrections`).
+    The contacts' edges are located along the grid lines closest to the sliding ``direction``
+    (radians from ``x̃``: the rows, or the columns when ``|sin| > |cos|``), each line's
+    contacts as the 1D method places them (:func:`edge_corrections`, the leading edge from the
+    gaps and the trailing one from the pressures); the area is the mean contact length per
+    line (the midpoint rule across the lines). A surface extruded across the sliding direction
+    has the 1D method's area. (The lines across the sliding direction, or both families
+    weighted by the boundary's orientation, converged more slowly on rough surfaces: on a
+    512² self-affine surface 2e-3 to 6e-3 off the converged area, against 1e-3 along it.)
     """
     p = np.asarray(pressure, dtype=float)
+    along_x = abs(np.cos(direction)) >= abs(np.sin(direction))
+    axis = 1 if along_x else 0
+    reverse = bool(np.cos(direction) < 0) if along_x else bool(np.sin(direction) < 0)
     loaded = p > 0
-    if loaded.all() or not loaded.any():
-        return float(loaded.mean())
-    wx, wy = normal_weights(loaded)
-    extra = (np.sum(wx * edge_corrections(p, gap, 1, reverse=np.cos(direction) < 0))
-             + np.sum(wy * edge_corrections(p, gap, 0, reverse=np.sin(direction) < 0)))
-    return float(min(max((loaded.sum() + extra) / p.size, 0.0), 1.0))
+    extra = edge_corrections(p, gap, axis, reverse=reverse)
+    cells = p.shape[axis]
+    lengths = np.minimum(loaded.sum(axis=axis) + extra.sum(axis=axis), cells)
+    return float(np.mean(lengths) / cells)
 
 
 def friction(pressure: np.ndarray, slope: np.ndarray) -> float:
