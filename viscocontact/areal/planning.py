@@ -41,7 +41,9 @@ def plan_steps(method, problem) -> SolvePlan:
         *cohesive,
         PlanStep(stage="grid", choice=f"{grids} cells (nested iteration)",
                  reason="the array's own grid" if problem.native_points else
-                        "points" if method.points else "default 256 per side"),
+                        "points" if method.points else
+                        f"default 256 per side, doubled until the estimate is <= "
+                        f"{method.tolerance:g} (at most {method.max_points} a side)"),
         PlanStep(stage="memory", choice=f"{need / 1e6:.0f} MB planned",
                  reason=f"limit {method.max_memory / 1e6:.0f} MB; {BYTES_PER_CELL} B per "
                         "cell" + ("" if not viscous else
