@@ -188,12 +188,14 @@ class Circulant:
 
 
 def invert(spectrum: np.ndarray) -> np.ndarray:
-    """``1/Λ_n``, with ``1/|Λ_1|`` for a vanishing mean mode (an incompressible solid)."""
+    """``1/Λ_n``, with ``1/|Λ_1|`` for a vanishing mean mode (an incompressible solid); any
+    number of dimensions (the mean mode first, ``Λ_1`` the next entry of the flat layout)."""
     lam = np.asarray(spectrum, dtype=complex)
-    out = np.empty_like(lam)
-    out[1:] = 1.0 / lam[1:]
-    out[0] = 1.0 / lam[0] if lam[0] != 0 else 1.0 / abs(lam[1])
-    return out
+    flat = lam.ravel()
+    out = np.empty_like(flat)
+    out[1:] = 1.0 / flat[1:]
+    out[0] = 1.0 / flat[0] if flat[0] != 0 else 1.0 / abs(flat[1])
+    return out.reshape(lam.shape)
 
 
 def power(pressure: np.ndarray, weights: np.ndarray, workers: int = 1) -> float:
@@ -207,9 +209,20 @@ def power(pressure: np.ndarray, weights: np.ndarray, workers: int = 1) -> float:
 
 
 def convolve(values: np.ndarray, spectrum: np.ndarray, workers: int = 1) -> np.ndarray:
-    """``irfft(spectrum · rfft(values))``: a circulant product by FFT."""
-    n = len(values)
-    return scipy.fft.irfft(spectrum * scipy.fft.rfft(values, workers=workers), n, workers=workers)
+    """``irfft(spectrum · rfft(values))``: a circulant product by FFT.
+
+    A 2D ``spectrum`` of shape ``(ny, nx//2 + 1)`` (the rfft2 layout, ``nx`` even) is the
+    operator of an ``(ny, nx)`` periodic grid, and ``values`` its cells flattened row by row:
+    the solvers see flat vectors in every dimension."""
+    if np.ndim(spectrum) == 1:
+        n = len(values)
+        return scipy.fft.irfft(spectrum * scipy.fft.rfft(values, workers=workers), n,
+                               workers=workers)
+    shape = (spectrum.shape[0], 2 * (spectrum.shape[1] - 1))
+    grid = np.reshape(values, shape)
+    out = scipy.fft.irfft2(spectrum * scipy.fft.rfft2(grid, workers=workers), shape,
+                           workers=workers)
+    return out.ravel()
 
 
 class OperatorCache:

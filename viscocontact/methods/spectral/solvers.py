@@ -108,11 +108,11 @@ def violation(gap: np.ndarray, loaded: np.ndarray) -> float:
 
 
 def circulant_diagonal(spectrum) -> float:
-    """The diagonal entry of a real symmetric circulant from its rfft eigenvalues (their mean
-    over all ``N`` modes)."""
+    """The diagonal entry of a real symmetric circulant from its rfft (or rfft2) eigenvalues
+    (their mean over all modes; the last axis holds the half spectrum)."""
     v = np.asarray(spectrum).real
-    n = 2 * (len(v) - 1)
-    return float((v[0] + 2.0 * v[1:-1].sum() + v[-1]) / n)
+    n = 2 * (v.shape[-1] - 1) * int(np.prod(v.shape[:-1]))
+    return float((v[..., 0].sum() + 2.0 * v[..., 1:-1].sum() + v[..., -1].sum()) / n)
 
 
 def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None, start=None,
@@ -273,7 +273,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         return convolve(v, spectrum, workers)
 
     stiffness = 1.0 / circulant_diagonal(lam.real)     # pressure that a unit gap is worth
-    singular_when_closed = not load and lam[0] == 0
+    singular_when_closed = not load and lam.flat[0] == 0
     p = np.maximum(np.asarray(start, dtype=float), 0.0)
     if not p.any():
         p[int(np.argmax(r))] = 1.0
