@@ -26,6 +26,14 @@ from .._validation import in_range
 from ..contact.edges import limit_energy_release
 from .base import AdhesionModel, EdgeTerms
 
+#: Largest share of the friction that the bulk dissipation may miss at a finite δX before a
+#: result says that the δX model does not hold (:meth:`EnergyBalance.outside_model`). The
+#: share is the net energy flux into the edges' tips, ``O(δX/ζ_edge)`` of the friction where
+#: the memory length at the edges is long against δX: 0.2-1 % at ζ = 1e-2 on the thesis's
+#: scenes, 11-12 % at ζ = 1e-3, tens of times the friction at ζ = 1e-5 (``docs/edges.md``,
+#: "Friction and dissipated power at edges").
+POWER_BALANCE_TOLERANCE = 0.02
+
 #: Default ``q0·δX``: 1e-4 of the fundamental wavelength over 2π (0.1 µm for λ0 = 6.28 mm).
 DEFAULT_EDGE_PERTURBATION = 1e-4
 
@@ -135,6 +143,35 @@ class EnergyBalance(AdhesionModel):
         sign = np.where(ctx.stress_intensity() >= 0, 1.0, -1.0) * np.sign(g)
         with np.errstate(divide="ignore"):
             return out * (sign / np.sqrt(np.abs(g)))[:, None]
+
+    def outside_model(self, ctx, friction: float, dissipation: float,
+                      edge_flux: float) -> str | None:
+        """With a finite δX, a reason when the bulk dissipation misses more than
+        :data:`POWER_BALANCE_TOLERANCE` of the friction.
+
+        The friction is the power the profile feeds in; it is the bulk dissipation plus the net
+        energy flux into the edges' square-root singularities, ``K_e K̃²/4`` per unit sliding
+        distance into each trailing edge and out of each leading one
+        (:func:`~viscocontact.contact.fields.edge_flux_friction`). The balance over a finite
+        advance holds the tips at that release only where the memory length at the edges is
+        long against δX; where it is not, the tips exchange other energies than the work of
+        adhesion, the friction is that of a process zone of about δX and depends on δX, and
+        the bulk dissipation (which counts the losses inside that zone, which the balance
+        charges to the work of adhesion) is not the friction. ``δX = 0`` holds every tip at
+        the work of adhesion: no reason."""
+        if self.edge_perturbation == 0.0 or not np.isfinite(friction) or friction == 0.0:
+            return None
+        share = abs(friction - dissipation) / abs(friction)
+        if not share > POWER_BALANCE_TOLERANCE:
+            return None
+        zetas = np.asarray(getattr(ctx.kernel, "zetas", ()), dtype=float)
+        memory = (f"memory length {float(zetas.max()):.3g}" if zetas.size
+                  else "no memory length")
+        return (f"the bulk dissipation is {dissipation / friction:.4g} times the friction "
+                f"(net energy flux into the edges {edge_flux / friction:+.3g} of it; more than "
+                f"{POWER_BALANCE_TOLERANCE:g} apart): the {memory} at the edges is not long "
+                f"against the edge advance δX = {self.edge_perturbation:.3g}, so the friction "
+                "is that of a process zone of about δX and depends on it (docs/edges.md)")
 
     def edge_terms(self, ctx) -> EdgeTerms:
         du, dlp, used = self._release(ctx)
