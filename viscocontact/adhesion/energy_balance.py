@@ -165,13 +165,18 @@ class EnergyBalance(AdhesionModel):
         if not share > POWER_BALANCE_TOLERANCE:
             return None
         zetas = np.asarray(getattr(ctx.kernel, "zetas", ()), dtype=float)
-        memory = (f"memory length {float(zetas.max()):.3g}" if zetas.size
-                  else "no memory length")
+        relax = getattr(ctx.kernel, "relaxation_lengths", None)
+        relax = np.asarray(relax() if relax is not None else (), dtype=float)
+        lengths = (f"memory length {float(zetas.max()):.3g}" if zetas.size
+                   else "no memory length")
+        if relax.size:
+            lengths += f" (relaxation length {float(relax.min()):.3g})"
         return (f"the bulk dissipation is {dissipation / friction:.4g} times the friction "
-                f"(net energy flux into the edges {edge_flux / friction:+.3g} of it; more than "
-                f"{POWER_BALANCE_TOLERANCE:g} apart): the {memory} at the edges is not long "
-                f"against the edge advance δX = {self.edge_perturbation:.3g}, so the friction "
-                "is that of a process zone of about δX and depends on it (docs/edges.md)")
+                f"(more than {100 * POWER_BALANCE_TOLERANCE:g} % from it) and the net energy "
+                f"flux into the edges {edge_flux / friction:+.3g} times: the {lengths} at the "
+                f"edges is not long against the edge advance δX = {self.edge_perturbation:.3g}, so "
+                "the friction is that of a process zone of about δX and depends on it "
+                "(docs/edges.md)")
 
     def edge_terms(self, ctx) -> EdgeTerms:
         du, dlp, used = self._release(ctx)
