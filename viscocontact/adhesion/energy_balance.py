@@ -33,6 +33,12 @@ from .base import AdhesionModel, EdgeTerms
 #: scenes, 11-12 % at ζ = 1e-3, tens of times the friction at ζ = 1e-5 (``docs/edges.md``,
 #: "Friction and dissipated power at edges").
 POWER_BALANCE_TOLERANCE = 0.02
+#: ... beyond this share of the energy that flows through the edges' tips
+#: (``Σ K_e K̃²/4`` in friction units): the tips release the work of adhesion only to the
+#: accuracy of the finite advance and of the fitted K̃ (within 0.1-0.4 % on the wavy thesis
+#: scene at ζ >= 0.1, 1-4.5 % on the rough one's small contacts at ζ = 1 and 1e3), which is a
+#: share of the friction where the friction is small against that energy (the glassy end).
+EDGE_RELEASE_ACCURACY = 0.01
 
 #: Default ``q0·δX``: 1e-4 of the fundamental wavelength over 2π (0.1 µm for λ0 = 6.28 mm).
 DEFAULT_EDGE_PERTURBATION = 1e-4
@@ -146,8 +152,9 @@ class EnergyBalance(AdhesionModel):
 
     def outside_model(self, ctx, friction: float, dissipation: float,
                       edge_flux: float) -> str | None:
-        """With a finite δX, a reason when the bulk dissipation misses more than
-        :data:`POWER_BALANCE_TOLERANCE` of the friction.
+        """With a finite δX and a lossy solid, a reason when the bulk dissipation misses more
+        than :data:`POWER_BALANCE_TOLERANCE` of the friction and
+        :data:`EDGE_RELEASE_ACCURACY` of the energy that flows through the edges' tips.
 
         The friction is the power the profile feeds in; it is the bulk dissipation plus the net
         energy flux into the edges' square-root singularities, ``K_e K̃²/4`` per unit sliding
@@ -159,16 +166,19 @@ class EnergyBalance(AdhesionModel):
         the bulk dissipation (which counts the losses inside that zone, which the balance
         charges to the work of adhesion) is not the friction. ``δX = 0`` holds every tip at
         the work of adhesion: no reason."""
-        if self.edge_perturbation == 0.0 or not np.isfinite(friction) or friction == 0.0:
+        if (self.edge_perturbation == 0.0 or not ctx.dissipative
+                or not np.isfinite(friction * dissipation) or friction == 0.0):
             return None
-        share = abs(friction - dissipation) / abs(friction)
-        if not share > POWER_BALANCE_TOLERANCE:
+        k = ctx.stress_intensity()
+        scale = abs(ctx.amplitude / (2 * np.pi * ctx.fields.mean_pressure))
+        through = scale * ctx.edge_compliance * float(np.sum(k**2)) / 4
+        allowed = POWER_BALANCE_TOLERANCE * abs(friction) + EDGE_RELEASE_ACCURACY * through
+        if not abs(friction - dissipation) > allowed:
             return None
         zetas = np.asarray(getattr(ctx.kernel, "zetas", ()), dtype=float)
         relax = getattr(ctx.kernel, "relaxation_lengths", None)
         relax = np.asarray(relax() if relax is not None else (), dtype=float)
-        lengths = (f"memory length {float(zetas.max()):.3g}" if zetas.size
-                   else "no memory length")
+        lengths = f"memory length {float(zetas.max()):.3g}" if zetas.size else "layer"
         if relax.size:
             lengths += f" (relaxation length {float(relax.min()):.3g})"
         return (f"the bulk dissipation is {dissipation / friction:.4g} times the friction "
