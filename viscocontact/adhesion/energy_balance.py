@@ -161,11 +161,12 @@ class EnergyBalance(AdhesionModel):
         distance into each trailing edge and out of each leading one
         (:func:`~viscocontact.contact.fields.edge_flux_friction`). The balance over a finite
         advance holds the tips at that release only where the memory length at the edges is
-        long against δX; where it is not, the tips exchange other energies than the work of
-        adhesion, the friction is that of a process zone of about δX and depends on δX, and
-        the bulk dissipation (which counts the losses inside that zone, which the balance
-        charges to the work of adhesion) is not the friction. ``δX = 0`` holds every tip at
-        the work of adhesion: no reason."""
+        long against δX (and δX short against the contact); where it is not, the tips exchange
+        other energies than the work of adhesion, the friction is that of a process zone of
+        about δX and depends on δX, and the bulk dissipation (which counts the losses inside
+        that zone, which the balance charges to the work of adhesion) is not the friction.
+        ``δX = 0`` holds every tip at the work of adhesion, and an elastic solid has no bulk
+        loss to compare: no reason."""
         if (self.edge_perturbation == 0.0 or not ctx.dissipative
                 or not np.isfinite(friction * dissipation) or friction == 0.0):
             return None
@@ -175,18 +176,23 @@ class EnergyBalance(AdhesionModel):
         allowed = POWER_BALANCE_TOLERANCE * abs(friction) + EDGE_RELEASE_ACCURACY * through
         if not abs(friction - dissipation) > allowed:
             return None
+        tips = ctx.edge_compliance * k**2 / 4 / self.target(ctx.amplitude)
         zetas = np.asarray(getattr(ctx.kernel, "zetas", ()), dtype=float)
         relax = getattr(ctx.kernel, "relaxation_lengths", None)
         relax = np.asarray(relax() if relax is not None else (), dtype=float)
-        lengths = f"memory length {float(zetas.max()):.3g}" if zetas.size else "layer"
+        edges = ctx.mesh.edges
+        lengths = [f"memory length {float(zetas.max()):.3g}"] if zetas.size else []
         if relax.size:
-            lengths += f" (relaxation length {float(relax.min()):.3g})"
-        return (f"the bulk dissipation is {dissipation / friction:.4g} times the friction "
-                f"(more than {100 * POWER_BALANCE_TOLERANCE:g} % from it) and the net energy "
-                f"flux into the edges {edge_flux / friction:+.3g} times: the {lengths} at the "
-                f"edges is not long against the edge advance δX = {self.edge_perturbation:.3g}, so "
-                "the friction is that of a process zone of about δX and depends on it "
-                "(docs/edges.md)")
+            lengths.append(f"relaxation length {float(relax.min()):.3g}")
+        lengths.append(f"smallest half-width {0.5 * float(np.min(edges[1::2] - edges[0::2])):.3g}")
+        return (f"the bulk dissipation is {dissipation / friction:.4g} times the friction and "
+                f"the net energy flux into the edges {edge_flux / friction:+.3g} times (more "
+                f"than {100 * POWER_BALANCE_TOLERANCE:g} % of the friction and "
+                f"{100 * EDGE_RELEASE_ACCURACY:g} % of the energy through the tips): the tips "
+                f"release {float(tips.min()):.3g} to {float(tips.max()):.3g} times the work of "
+                f"adhesion, which the balance over δX = {self.edge_perturbation:.3g} holds "
+                f"({', '.join(lengths)}), so the friction is that of a process zone of about "
+                "δX and depends on it (docs/edges.md)")
 
     def edge_terms(self, ctx) -> EdgeTerms:
         du, dlp, used = self._release(ctx)
