@@ -106,6 +106,13 @@ class AdhesionModel(abc.ABC):
         finite virtual edge advance; the orchestrator grades the edge zones below the smallest."""
         return ()
 
+    def sharp_edge(self) -> bool:
+        """Whether the edge condition is the release rate of the square-root singularity itself
+        (``K_e K̃²/4`` with the instantaneous compliance: the δX → 0 energy balance), so that
+        the edge zones resolve the solid's relaxation lengths, below which that K̃ is set
+        (:func:`~viscocontact.methods.bem.meshing.mesh_spec`). False by default."""
+        return False
+
     def edge_advance(self) -> float:
         """The virtual edge advance ``q0·δX`` the model's balance uses (0: none, or the limit
         δX → 0); reported with every result."""
