@@ -279,13 +279,13 @@ class FieldSensitivity:
             # old edge (new_element_layout)
             new_nodes = np.append(border.left, border.right[-1])
             x_edge = mesh.edges[i]
-            out = -1.0 if i % 2 == 0 else 1.0                # the new edge's side
-            o = out * (x_edge + out * dx - new_nodes)         # distance from the new edge
+            side = -1.0 if i % 2 == 0 else 1.0               # the new edge's side
+            o = side * (x_edge + side * dx - new_nodes)       # distance from the new edge
             layout = new_element_layout(mesh, ctx.spec, i, dx)
             fixed = 0 if layout is None else layout[2]
             held = np.sort(o)[fixed]
             stretch = np.where(o <= held, 0.0, (o - held) / (dx - held))
-            nv = np.outer(out * (1.0 - stretch), ddx)
+            nv = np.outer(side * (1.0 - stretch), ddx)
             nv[:, i] += 1.0
             li_n, ri_n = np.arange(n), np.arange(1, n + 1)
             xi_n = 0.5 * (border.left + border.right)
