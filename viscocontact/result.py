@@ -60,6 +60,14 @@ class ContactResult:
         ``seconds`` and, for a solve that ends with contacts, ``conformity`` (the largest
         departure of the discrete solid from the profile inside the contacts, between
         collocation points, in units of the profile amplitude: a discretisation error).
+        The power balance in friction units: ``friction_dissipation`` (the bulk dissipation
+        over V·load) plus ``friction_edges`` (the net energy flux into the edges'
+        square-root singularities, ``K_e K̃²/4`` into each trailing edge and out of each leading
+        one) equals ``friction`` to discretisation error. ``outside_model`` is the reason why
+        the result lies where its adhesion model does not hold (``""`` where it holds; the
+        message says it too): with a finite edge advance δX, where the bulk dissipation misses
+        more than 2 % of the friction (``docs/edges.md``, "Friction and dissipated power at
+        edges").
     """
 
     area: float

@@ -45,6 +45,31 @@ def test_johnson_adhesive_wavy_contact(Gamma, p):
     assert abs(r.area / ref - 1) < 1e-3
 
 
+@pytest.mark.parametrize("edge_resolution", [0.1, 0.025])
+def test_johnson_area_under_edge_refinement(edge_resolution):
+    """δX = 1e-4 with edge elements of δX/10 (the zone aligned with the advance) and δX/40 (not
+    aligned: the new edge meshed with the zone's own sizes): 1.9e-5 and 9.9e-6 from Johnson
+    (the finite advance's own bias is O(δX/α)); the earlier border, graded from both ends of
+    the advance, was 5.0e-4 off at δX/40."""
+    gamma = 0.05
+    r = _solve(mean_pressure=0.1, adhesion=EnergyBalance(gamma=gamma * LAM**2),
+               discretization=Discretization(edge_resolution=edge_resolution))
+    assert r.converged, r.message
+    assert abs(r.area / JohnsonWavy(Gamma=gamma).area_at_pressure(0.1) - 1) < 1e-4
+
+
+@pytest.mark.parametrize("p", [0.1, -0.02])
+def test_johnson_area_with_a_sharp_edge(p):
+    """δX = 0 on the default mesh (an edge zone for the fitted K̃): 2.3e-5 and 1.6e-5 from
+    Johnson (second order in the elements: 6.6e-5 and 3.1e-5 with 32); without the zone the
+    calibrated fit on the clustered mesh was 1.1e-3 and 8.4e-4 off."""
+    gamma = 0.05
+    r = _solve(mean_pressure=p, adhesion=EnergyBalance(gamma=gamma * LAM**2,
+                                                        edge_perturbation=0.0))
+    assert r.converged, r.message
+    assert abs(r.area / JohnsonWavy(Gamma=gamma).area_at_pressure(p) - 1) < 1e-4
+
+
 def test_johnson_pull_off_and_closure():
     j = JohnsonWavy(Gamma=0.05)
     A_off, p_off, _ = j.pull_off("load")

@@ -49,14 +49,14 @@ def _edge_element(beta: float, zeta: float, advance: float) -> float | None:
     (1e4, 1e-6, 1e-4, 1e-5),        # a stiff solid's relaxation length goes with its branch
     (10.0, 2e-5, 1e-4, 2e-6),       # memory above δX/10: resolved as before
     (1e4, 1e-2, 1e-4, 1e-6),        # resolved memory: its relaxation length 1e-6 is kept
-    (10.0, 1e-6, 0.0, 1e-6),        # δX → 0 (the glassy edge): the layer is resolved
+    (10.0, 1e-6, 0.0, 1e-8),        # δX → 0 (the sharp edge): ζ/β = 1e-7 gets ten elements
 ])
 def test_memory_layers_much_thinner_than_the_edge_advance_are_not_resolved(beta, zeta, advance,
                                                                            expected):
     """With a finite δX, a memory length below δX/10 gets no edge elements of its own, nor the
     relaxation length of its branch; the edge element is then a tenth of δX (aligned with the
-    advance). Without δX (the closed form of a glassy edge) the layer is resolved down to
-    ``SMALLEST_RESOLVED``."""
+    advance). Without δX (the closed form of a glassy edge) the layer and its relaxation length
+    are resolved with ``edge_resolution`` elements down to ``SHARP_SMALLEST``."""
     assert _edge_element(beta, zeta, advance) == pytest.approx(expected, rel=1e-12)
 
 

@@ -46,6 +46,12 @@ Contract for implementers
    :meth:`residuals` will ask for on a mesh; on two cores their new rows and columns are then
    computed while the influence matrix is factorised. The result is the same either way; the
    default names none.
+10. Optionally, :meth:`outside_model` says why an equilibrium lies where the model does not
+    hold, from its edges and the two parts of its friction (the bulk dissipation and the net
+    energy flux into the edges' singularities,
+    :func:`~viscocontact.contact.fields.edge_flux_friction`); the orchestrator adds the reason
+    to the result's message and ``extras["outside_model"]`` and issues a
+    :class:`~viscocontact.errors.ModelValidityWarning`. The default: the model holds.
 
 Every method receives an :class:`~viscocontact.contact.edges.EdgeContext`, which computes
 stress-intensity factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
@@ -99,6 +105,13 @@ class AdhesionModel(abc.ABC):
         """Lengths (q0-scaled) of the model that the mesh must resolve at every edge, such as a
         finite virtual edge advance; the orchestrator grades the edge zones below the smallest."""
         return ()
+
+    def sharp_edge(self) -> bool:
+        """Whether the edge condition is the release rate of the square-root singularity itself
+        (``K_e K̃²/4`` with the instantaneous compliance: the δX → 0 energy balance), so that
+        the edge zones resolve the solid's relaxation lengths, below which that K̃ is set
+        (:func:`~viscocontact.methods.bem.meshing.mesh_spec`). False by default."""
+        return False
 
     def edge_advance(self) -> float:
         """The virtual edge advance ``q0·δX`` the model's balance uses (0: none, or the limit
@@ -168,6 +181,14 @@ class AdhesionModel(abc.ABC):
         where a contact is born although the profile does not penetrate (contract item 6);
         none by default."""
         return []
+
+    def outside_model(self, ctx, friction: float, dissipation: float,
+                      edge_flux: float) -> str | None:
+        """Why the equilibrium of ``ctx`` lies where the model does not hold (contract item
+        10), given its friction ``μ = ∫ p r' dx/(λ0 p∞)`` and the parts of the power balance
+        in the same units: the bulk ``dissipation`` and the net ``edge_flux`` into the edges'
+        singularities; None (the default) when it holds."""
+        return None
 
     @abc.abstractmethod
     def edge_terms(self, ctx) -> EdgeTerms:

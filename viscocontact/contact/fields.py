@@ -331,6 +331,48 @@ def friction(mesh: Mesh, sigma: np.ndarray, shape: NormalizedProfile, mean_press
     return float(work / (2 * np.pi * mean_pressure))
 
 
+def edge_flux_friction(stress_intensity, compliance: float, amplitude: float,
+                       mean_pressure: float) -> float:
+    r"""``μ`` carried by the net energy flux into the contact edges' square-root singularities:
+    ``(Λ̃/2πp̃∞) (K_e/4) Σ_j (K̃²_trailing,j - K̃²_leading,j)``.
+
+    The power the profile feeds in, ``V·F_t`` with ``F_t = ∫ p r' dx`` (:func:`friction`), is
+    the bulk dissipation (:func:`dissipated_friction`) plus the energy that flows into the edge
+    tips: ``G = K_e K̃²/4`` per unit sliding distance (Irwin with the instantaneous compliance
+    ``K_e``, the coefficient of the kernel's log singularity) into every trailing (left,
+    opening) edge, and out of every leading (right, closing) edge. A field whose stress is
+    bounded at its edges (no adhesion, cohesive zones) has none. Where both edges of a contact
+    release the work of adhesion at the tip (``δX → 0``), the two cancel and ``μ`` is the bulk
+    dissipation alone; ``docs/edges.md``, "Friction and dissipated power at edges".
+
+    Parameters
+    ----------
+    stress_intensity : (2 N_c,) array
+        ``K̃`` at every edge, left and right edge of each contact in turn.
+    compliance : float
+        ``K_e = E0 J(0+)`` (1 for a relaxed kernel).
+    amplitude, mean_pressure : float
+        ``Λ̃`` and ``p̃∞``.
+
+    Returns
+    -------
+    float
+        0 without edges; NaN when the mean pressure vanishes (as :func:`friction`).
+
+    Examples
+    --------
+    >>> round(edge_flux_friction([0.4, 0.2], 1.0, 0.1, 0.2) * 2 * np.pi * 0.2 / 0.1, 12)
+    0.03
+    """
+    k = np.asarray(stress_intensity, dtype=float).ravel()
+    if k.size == 0:
+        return 0.0
+    if not mean_pressure:
+        return float("nan")
+    flux = 0.25 * compliance * float(np.sum(k[0::2] ** 2) - np.sum(k[1::2] ** 2))
+    return float(amplitude * flux / (2 * np.pi * mean_pressure))
+
+
 #: Most interval end points for which :func:`dissipated_friction` is computed (its cost is
 #: ``n²/2`` evaluations of the kernel's dissipative part: about 0.7 s at this size).
 DISSIPATION_MAX_NODES = 2048

@@ -34,7 +34,7 @@ from scipy.linalg import lu_solve
 
 from .._threads import pair
 from ..kernels.prepared import pairwise
-from .edges import Border, dissipative, sif_calibration
+from .edges import Border, dissipative, new_element_layout, sif_calibration
 from .fields import _POWERS, N_FIT, _avg_power, edge_rows
 from .mesh import contact_spec, element_counts, graded_nodes
 
@@ -274,11 +274,18 @@ class FieldSensitivity:
                 return None
             ddx = np.zeros(D) if ddx is None else np.asarray(ddx, dtype=float)
             n = len(border.s_new)
-            # new nodes: translated with edge i, stretched with the advance
+            # new nodes: translated with edge i; with the advance, those of the new edge's
+            # fixed sizes move with the new edge, the others are stretched between it and the
+            # old edge (new_element_layout)
             new_nodes = np.append(border.left, border.right[-1])
             x_edge = mesh.edges[i]
-            phi = (new_nodes - (x_edge - dx if i % 2 == 0 else x_edge)) / dx
-            nv = np.outer(phi - (1.0 if i % 2 == 0 else 0.0), ddx)
+            side = -1.0 if i % 2 == 0 else 1.0               # the new edge's side
+            o = side * (x_edge + side * dx - new_nodes)       # distance from the new edge
+            layout = new_element_layout(mesh, ctx.spec, i, dx)
+            fixed = 0 if layout is None else layout[2]
+            held = np.sort(o)[fixed]
+            stretch = np.where(o <= held, 0.0, (o - held) / (dx - held))
+            nv = np.outer(side * (1.0 - stretch), ddx)
             nv[:, i] += 1.0
             li_n, ri_n = np.arange(n), np.arange(1, n + 1)
             xi_n = 0.5 * (border.left + border.right)

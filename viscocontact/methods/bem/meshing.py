@@ -80,6 +80,11 @@ INTERIOR_CAP = 512
 #: Lengths below this (q0-scaled) are not resolved by the edge zones: a memory length ζτ_i/τ
 #: below it changes areas by O(ζ/α) only, and resolving it costs elements at every edge.
 SMALLEST_RESOLVED = 1e-6
+#: Smallest edge element of a sharp edge (the closed form δX = 0 with adhesion), which resolves
+#: the relaxation lengths of the branches whose memory length is resolved: its glassy K̃ is set
+#: below them (wavy thesis scene, p̃∞ = 0.3, ζ = 1e-5: Ã = 2.6623 with edge elements of 1e-6, a
+#: whole relaxation length, 2.6487 with 1e-7 and 1e-8).
+SHARP_SMALLEST = 1e-8
 #: With a finite edge advance δX, memory lengths shorter than this fraction of δX are not
 #: resolved either (nor the relaxation lengths of their branches): the energy balance over the
 #: advance sees the solid relaxed beyond a glassy layer that thin. On the adhesive wavy contact
@@ -137,9 +142,14 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
     per relaxation length gives a smooth layer. Up to ``β = 1/edge_resolution`` the memory
     rule is the finer one and the mesh does not change.
 
-    Without a finite edge advance, an elastic kernel (no dissipative branch) gets no zones: its
-    edge fields are self-similar square-root fields, which eq. 4.22 with the calibrated fit
-    already resolves. Neither does a kernel whose memory lengths are all below
+    Without a finite edge advance, an adhesionless elastic kernel (no dissipative branch) gets
+    no zones: its edge fields are self-similar square-root fields, which eq. 4.22 with the
+    calibrated fit already resolves. A sharp edge (:meth:`~viscocontact.adhesion.base.
+    AdhesionModel.sharp_edge`: the closed form δX = 0, whose balance is the fitted K̃ itself)
+    gets the zone of its model's length (``TIP_ZONE``) and resolves the relaxation lengths
+    with ``edge_resolution`` too, since its K̃ is the glassy one, set below them (on the wavy
+    thesis scene, p̃∞ = 0.3, ζ = 1e-4: Ã = 2.6622 with one element per relaxation length,
+    2.6509 and 2.6486 with a third and a tenth of one). Neither does a kernel whose memory lengths are all below
     ``SMALLEST_RESOLVED`` or above the period. With a finite advance δX, memory lengths below
     ``THIN_MEMORY·δX`` are not resolved either, nor the relaxation lengths of their branches
     (:func:`branch_relaxation_lengths`). A finite advance δX always gets zones aligned with
@@ -159,13 +169,14 @@ def mesh_spec(disc: Discretization, kernel, adhesion) -> MeshSpec:
                + [ell for ell in advance if ell < TWO_PI])
     smallest = None
     if lengths:
-        smallest = disc.edge_resolution * min(lengths)
         relaxation = [ell for ell in branch_relaxation_lengths(kernel, floor) if ell < TWO_PI]
+        sharp = relaxation if adhesion.sharp_edge() else []
+        smallest = disc.edge_resolution * min(lengths + sharp)
         if relaxation and min(relaxation) < smallest * (1.0 - RELAXATION_MARGIN):
             # no edge element wider than the shortest relaxation length: the stress the slow
             # branches carry drops to zero across it at a trailing edge
             smallest = min(relaxation)
-        smallest = max(smallest, SMALLEST_RESOLVED)
+        smallest = max(smallest, SHARP_SMALLEST if sharp else SMALLEST_RESOLVED)
     return MeshSpec(elements=disc.elements, exponent=disc.clustering, grading=disc.grading,
                     smallest=smallest, advance=edge_advance if edge_advance > 0 and smallest
                     else None)

@@ -17,7 +17,8 @@ from typing import ClassVar
 import attrs
 import numpy as np
 
-from ...contact.fields import dissipated_friction, friction
+from ...contact.fields import dissipated_friction, edge_flux_friction, friction
+from ...errors import ModelValidityWarning, warn_user
 from ...result import ContactResult, SolveStatus
 from ..base import SolutionMethod
 from .checks import Checks
@@ -122,7 +123,8 @@ class Solve:
         dx = float(adh.edge_advance())
         extras = {"events": list(log.events), "residual_history": list(log.history),
                   "seconds": elapsed, "method": BEM.name, "error_estimate": float("nan"),
-                  "friction_dissipation": float("nan")}
+                  "friction_dissipation": float("nan"), "friction_edges": float("nan"),
+                  "outside_model": ""}
         common = dict(iterations=log.iterations, function_evaluations=log.evaluations,
                       zeta=p.zeta, edge_perturbation=dx, extras=extras)
         kind = out.outcome
@@ -136,6 +138,17 @@ class Solve:
                 self.prep.kernel, mesh, fields.sigma, self.prep.shape.amplitude, pm, fields.loads)
             converged = kind is Outcome.CONVERGED
             terms = adh.edge_terms(out.ctx) if converged else None
+            message = out.message
+            if out.ctx is not None:
+                k = terms.stress_intensity if terms is not None else out.ctx.stress_intensity()
+                extras["friction_edges"] = edge_flux_friction(
+                    k, out.ctx.edge_compliance, self.prep.shape.amplitude, pm)
+                why = (adh.outside_model(out.ctx, mu, extras["friction_dissipation"],
+                                         extras["friction_edges"]) if converged else None)
+                if why:
+                    extras["outside_model"] = why
+                    message = f"{message}; outside the model: {why}"
+                    warn_user(f"outside the model: {why}", ModelValidityWarning)
             _, gap = self.checks.gap_outside(fields)
             fld = self.checks.fields_on_grid(fields) if want_fields else None
             extras["conformity"] = self.checks.conformity(
@@ -146,10 +159,11 @@ class Solve:
                 edges=mesh.edges.reshape(-1, 2).copy(), full_contact=False,
                 converged=converged,
                 status=SolveStatus.CONVERGED if converged else SolveStatus.NOT_CONVERGED,
-                message=out.message, residual=out.residual,
+                message=message, residual=out.residual,
                 min_gap=float(gap.min()) if gap.size else np.inf,
                 edge_terms=terms, fields=fld, **common)
         if kind is Outcome.FULL_CONTACT:
+            extras["friction_edges"] = 0.0          # no edges
             result = self.closed.result(target, out.message, want_fields, common)
             why = self.equilibrium.limitation
             if not result.converged and why is not None:

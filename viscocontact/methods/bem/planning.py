@@ -32,6 +32,9 @@ def _mesh_step(problem, spec, kernel) -> PlanStep:
                     choice=f"{base} + edge zones from an edge element of {spec.smallest:.3g}{aligned}, "
                            f"grading {spec.grading:g}",
                     reason="resolve the memory length and the edge advance next to every edge"
+                    + ("; a sharp edge (δX = 0): its fitted K̃ is set below the relaxation "
+                       "length, which gets edge_resolution elements (an elastic kernel: a zone "
+                       "for the fit)" if problem.adhesion.sharp_edge() else "")
                     + (" (here: a sixteenth of the quasi-static cohesive zone h̃0²/(4γ̃) "
                        f"= {problem.adhesion.quasi_static_zone:.3g}, or the memory length)"
                        if _cohesive(problem.adhesion) else "")

@@ -314,7 +314,10 @@ class Spectral(SolutionMethod):
         load, pen = problem.mean_pressure, problem.penetration
         events: list[str] = EventList("spectral")      # logged as they happen
         extras = {"method": self.name, "error_estimate": 0.0, "points": 0, "tolerance_met": True,
-                  "friction_dissipation": np.nan, "seconds": 0.0, "events": events}
+                  "friction_dissipation": np.nan, "seconds": 0.0, "events": events,
+                  # bounded stress at every edge (no adhesion, or a cohesive law): no energy
+                  # flows into the edges, and the model holds wherever the grid converges
+                  "friction_edges": 0.0, "outside_model": ""}
         common = dict(iterations=0, function_evaluations=0, zeta=float(problem.zeta),
                       edge_perturbation=0.0, extras=extras)
         # a cohesive law acts from a gap below its range on: a penetration down to -η can
