@@ -83,7 +83,7 @@ class Approach:
             return State.no_contact()
         d0, edges = first_touch(self.eq.prep.shape)
         touch = Control.penetration_of(d0)
-        state = self.relax.run(edges, touch)            # the first contact settles
+        state = self.relax.run(edges, touch, final=False)   # the first contact settles
         if state.outcome is Outcome.FULL_CONTACT:
             return self.closed(state, None, target)
         if not state.converged:
@@ -100,9 +100,17 @@ class Approach:
         return state
 
     def climb(self, state: State, d: float, target: Control) -> State:
-        """Follow the branch from ``state`` at penetration ``d`` to the target."""
+        """Follow the branch from ``state`` at penetration ``d`` to the target.
+
+        After a step that meets an event, the event lies between the state and that step's
+        penetration (``bracket``): the following steps stay inside, aimed just short of the
+        fold that the failed step's start predicts (:meth:`Path.fold_from_start`), else at the
+        middle, until the bracket is :attr:`ApproachOptions.smallest` wide; then the event
+        acts from the state, at the bracket's end."""
         eq, path, opt = self.eq, self.path, self.options
         step, below = opt.path_step, None
+        bracket: tuple[float, str] | None = None      # (penetration past the event, its kind)
+        aim: float | None = None                      # the fold predicted inside the bracket
         d_end = None if target.is_load else target.value
         while True:
             load = float(state.fields.mean_pressure)
@@ -110,7 +118,14 @@ class Approach:
                 return self.at_load(state, below, target)
             if d_end is not None and abs(d_end - d) <= 1e-15:
                 return state
-            d_next = d + step if d_end is None else d + float(np.clip(d_end - d, -step, step))
+            if bracket is not None and bracket[0] - d <= opt.smallest * (1 + 1e-9):
+                landing = self.act(bracket[1], state, below, bracket[0], target)
+                if landing.outcome is not Outcome.CONVERGED:
+                    return landing
+                below, state, d = None, landing, float(landing.fields.penetration)
+                step, bracket, aim = opt.path_step, None, None
+                continue
+            d_next = self.next_penetration(d, step, d_end, bracket, aim)
             tangent = path.tangent(state, False)
             start = path.predicted(state, d_next - d, tangent=tangent)
             last = d_next == d_end
@@ -120,21 +135,34 @@ class Approach:
                              reduction=0.0 if last else STEP_REDUCTION)
             event = self.event(state, start, trial, d_end is None)
             if event is None:
-                step = path.next_step(step, start, state.edges, trial.edges)
+                step = path.next_step(d_next - d, start, state.edges, trial.edges)
                 below, state, d = state, trial, d_next
                 continue
-            if step > opt.smallest * (1 + 1e-9):
-                step *= 0.5
-                continue
-            if event == "closure":
-                return self.closed(trial, state, target)
-            landing = self.jump(event, state, below, d_next)
-            if landing.outcome is Outcome.FULL_CONTACT:
-                return self.closed(landing, state, target)
-            if not landing.converged:
-                return landing
-            below, state, d = None, landing, float(landing.fields.penetration)
-            step = opt.path_step
+            bracket, aim = (d_next, event), None
+            if event == "fold" and eq.adhesive:
+                ahead = path.fold_from_start(state, tangent, start, d, d_next - d)
+                aim = None if ahead is None else ahead[0]
+
+    def next_penetration(self, d: float, step: float, d_end: float | None,
+                         bracket: tuple[float, str] | None, aim: float | None) -> float:
+        """The next step's penetration: a path step (up to the target penetration), or inside
+        the bracket of an event, just short of its predicted fold or at its middle."""
+        if bracket is None:
+            return d + step if d_end is None else d + float(np.clip(d_end - d, -step, step))
+        end, half = bracket[0], 0.5 * self.options.smallest
+        if aim is not None and d + half < aim - half < end:
+            return aim - half
+        return 0.5 * (d + end)
+
+    def act(self, event: str, state: State, below: State | None, past: float,
+            target: Control) -> State:
+        """The event's action, located between ``state`` and the penetration ``past``."""
+        if event == "closure":
+            return self.closed(State.full_contact(), state, target)
+        landing = self.jump(event, state, below, past)
+        if landing.outcome is Outcome.FULL_CONTACT:
+            return self.closed(landing, state, target)
+        return landing
 
     def event(self, state: State, start, trial: State, load_control: bool) -> str | None:
         """What ends the branch within a step to ``trial`` (None: the step is on the branch)."""
@@ -170,7 +198,7 @@ class Approach:
         else:
             control = Control.penetration_of(d_next)
             _record(log, "fold", penetration=state.fields.penetration)
-        landing = self.relax.run(state.edges, control)
+        landing = self.relax.run(state.edges, control, final=False)
         if landing.converged:
             _record(log, "jump", area=float(np.sum(landing.fields.mesh.width)),
                     penetration=landing.fields.penetration)

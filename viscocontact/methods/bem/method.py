@@ -100,7 +100,7 @@ class Solve:
             out = self.equilibrium.solve(edges, target)
             if out.outcome is Outcome.NOT_CONVERGED and adhesive and not target.is_load:
                 # retracted past the fold of its branch, the contact pulls off
-                out = self.path.release(edges, target) or out
+                out = Relaxation(self.equilibrium, self.closed).run(edges, target)
             if out.outcome is Outcome.NOT_CONVERGED and not adhesive:
                 # an adhesionless equilibrium does not depend on the path: start afresh
                 self.log.event(f"no equilibrium from the given contact set ({out.message}); "
@@ -120,7 +120,8 @@ class Solve:
         sqrt_m2 = np.sqrt(self.prep.m2) if self.prep.m2 > 0 else np.nan
         adh = p.adhesion
         dx = float(adh.edge_advance())
-        extras = {"events": list(log.events), "residual_history": list(log.history),
+        extras = {"events": list(log.events), "path_events": list(log.records),
+                  "residual_history": list(log.history),
                   "seconds": elapsed, "method": BEM.name, "error_estimate": float("nan"),
                   "friction_dissipation": float("nan")}
         common = dict(iterations=log.iterations, function_evaluations=log.evaluations,

@@ -99,7 +99,14 @@ class Path:
         self.log = equilibrium.log
 
     def approach(self, target: Control) -> State:
-        """The equilibrium at ``target`` reached from first touch."""
+        """The equilibrium at ``target`` reached from first touch: the approach history
+        (:class:`~viscocontact.methods.bem.approach.Approach`)."""
+        from .approach import Approach, ApproachOptions
+
+        return Approach(self, ApproachOptions(path_step=self.path_step)).run(target)
+
+    def approach_by_rules(self, target: Control) -> State:
+        """The former approach (kept while its rules are retired)."""
         eq, log = self.eq, self.log
         if not target.is_load and target.value <= 0:
             # approached from afar, the profile first touches at Δ̃ = 0 (adhesion acts only on
