@@ -109,8 +109,6 @@ class Solve:
                 out = self.path.approach(target)
         else:
             out = self.path.approach(target)
-            if target.is_load and out.outcome is Outcome.CONVERGED and adhesive:
-                out = self.path.stable_under_load(out, target)
         return self.assemble(out, target, want_fields, time.perf_counter() - t0)
 
     def assemble(self, out: State, target: Control, want_fields: bool,

@@ -8,9 +8,9 @@ Griffith balance), at fixed speed ζ and fixed control, until the edges stop,
 
     dX_i/dt = -o_i r_i(X),   o_i = +1 for a right edge, -1 for a left one,
 
-so that an edge whose residual is negative (it would advance, :meth:`Path.wants_to_grow`)
-advances, and one with a positive residual recedes. The flow is integrated by linearly implicit
-Euler steps, ``(I/h + O J) δ = -O r`` (``J`` refreshed after a rejected step and every
+so that an edge whose residual is negative (it would advance) advances, and one with a
+positive residual recedes. The flow is integrated by linearly implicit Euler steps,
+``(I/h + O J) δ = -O r`` (``J`` refreshed after a rejected step and every
 :data:`JACOBIAN_AGE` steps), with the step ``h`` chosen by step doubling so that no edge
 moves more than ``tolerance`` of its contact's half-width (or of the mean half-width, when that
 is larger) away from the two half-steps; contacts that meet merge, contacts that vanish detach,
