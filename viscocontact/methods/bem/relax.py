@@ -98,6 +98,7 @@ class Relaxation:
         systems.append(system)
         settled = SETTLED * self.eq.tolerances.residual
         h = None
+        shortcut = True         # finish with the equilibrium solve once Newton's step is short
         J = None                # the Jacobian of the steps: kept while they are accepted
         age = 0
         moved = 0
@@ -111,8 +112,15 @@ class Relaxation:
                 J, age = self._jacobian(system, x), 0
                 if J is None:
                     return self._failed(x, "met a contact set without derivatives")
-            if self._near_stable_root(r, J, x):
-                break
+            if shortcut and self._near_stable_root(r, J, x):
+                # Newton's step lands on the root the motion is heading for, unless the state
+                # sits at a fold past which the root is gone: then the motion goes on
+                out = self.eq.solve(x, control, use_fallback=False, **self._finish)
+                if out.outcome is not Outcome.NOT_CONVERGED:
+                    self.eq.log.event(f"the edges moved in {moved} steps of their overdamped "
+                                      "motion")
+                    return out
+                shortcut = False
             if h is None:       # the first step moves the fastest edge a twentieth of a scale
                 h = 0.05 * float(np.min(_scale(x) / np.maximum(np.abs(r), 1e-300)))
             # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign
@@ -141,14 +149,14 @@ class Relaxation:
                 return State.full_contact()
             if not x.size:
                 self.eq.log.event("the edges' motion detached every contact")
-                return self.eq.solve(x, control, **self._finish)
+                return self.eq.solve(x, control, use_fallback=False, **self._finish)
             if changed:
                 system, J = self.eq.system(control, x), None
                 systems.append(system)
         else:
             return self._failed(x, f"did not stop within {self.max_steps} steps")
         self.eq.log.event(f"the edges moved in {moved} steps of their overdamped motion")
-        return self.eq.solve(x, control, **self._finish)
+        return self.eq.solve(x, control, use_fallback=False, **self._finish)
 
     @staticmethod
     def _residual(system, x):
