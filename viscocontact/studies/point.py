@@ -147,7 +147,10 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
         record["seconds"] = time.perf_counter() - t0
         return record
     record["started_from"] = started_from
-    record.update(events=json.dumps(path.events), ramp=path.state)
+    # the speed ramp's events since the previous point, or the approach's own (folds, jumps,
+    # births, merges, closure: ``extras["path_events"]`` of the BEM)
+    events = path.events or list(result.extras.get("path_events", []))
+    record.update(events=json.dumps(events), ramp=path.state)
     out = result.to_dict()
     for key in COLUMNS:
         if key in out and key not in ("edges", "zeta"):

@@ -41,13 +41,13 @@ def test_below_the_unstable_root_the_edges_settle_on_the_stable_one(start):
 
 def test_outside_the_unstable_root_the_edges_run_away_from_the_stable_one():
     """Just outside the unstable root the contact grows instead, away from the stable root,
-    at both tolerances to the same state."""
-    wide = [problem().solve(initial=RelaxFrom([-0.515 * UNSTABLE, 0.515 * UNSTABLE],
-                                              tolerance=tol)) for tol in (0.02, 0.002)]
-    for result in wide:
-        assert result.full_contact or result.area > UNSTABLE
-    assert wide[0].full_contact == wide[1].full_contact
-    assert wide[0].area == pytest.approx(wide[1].area, rel=1e-7)
+    towards closure. (Johnson's contact closes; the BEM's mesh does not resolve a gap below
+    about 2e-3 of the period between two edges, where it may stop on a near-closed state
+    instead: ``docs/histories.md``.)"""
+    for tol in (0.02, 0.002):
+        result = problem().solve(initial=RelaxFrom([-0.515 * UNSTABLE, 0.515 * UNSTABLE],
+                                                   tolerance=tol))
+        assert result.converged and (result.full_contact or result.area > 0.99 * 2 * np.pi)
 
 
 def test_a_motion_that_does_not_stop_within_its_steps_says_so():

@@ -28,7 +28,7 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
-from .path import APPROACH_BUDGET, STEP_REDUCTION, Path
+from .path import STEP_REDUCTION, Path
 from .relax import Relaxation
 from .sets import Control, first_touch
 from .state import Outcome, State
@@ -52,7 +52,7 @@ class ApproachOptions:
     """
 
     path_step: float
-    resolution: float = 1.0 / 16.0
+    resolution: float = 1.0 / 256.0
     jumped: float = 0.25
     relax_tolerance: float = 0.02
 
@@ -82,61 +82,83 @@ class Approach:
             # contact): no contact yet
             return State.no_contact()
         d0, edges = first_touch(self.eq.prep.shape)
-        touch = Control.penetration_of(d0)
-        state = self.relax.run(edges, touch)            # the first contact settles
-        if state.outcome is Outcome.FULL_CONTACT:
+        state = self.relax.run(edges, Control.penetration_of(d0), final=False)
+        if state.outcome is Outcome.FULL_CONTACT:   # the first contact settles
             return self.closed(state, None, target)
         if not state.converged:
             return state
-        return self.climb(state, d0, target)
+        return self.climb(state, target)
+
+    @staticmethod
+    def value(state: State, kind: str) -> float:
+        """The state's value of the controlled quantity."""
+        fields = state.fields
+        return float(fields.mean_pressure if kind == "mean_pressure" else fields.penetration)
 
     def closed(self, state: State, before: State | None, target: Control) -> State:
         """The contact closed over the period on the way to ``target``."""
-        _record(self.eq.log, "closure", penetration=np.nan if before is None
-                else before.fields.penetration)
+        _record(self.eq.log, "closure", **({} if before is None
+                                           else {target.kind: self.value(before, target.kind)}))
         if target.is_load and not self.path.closed.supports(target.value):
             start = before.edges if before is not None else state.edges
             return self.eq.solve(start, target)
         return state
 
-    def climb(self, state: State, d: float, target: Control) -> State:
-        """Follow the branch from ``state`` at penetration ``d`` to the target."""
+    def climb(self, state: State, target: Control) -> State:
+        """Follow the branch from ``state`` to ``target`` in steps of the controlled quantity.
+
+        After a step that meets an event, the event lies between the state and that step's
+        value (``bracket``): the following steps stay inside, aimed just short of the fold
+        that the failed step's start predicts (:meth:`fold_ahead`), else at the middle, until
+        the bracket is :attr:`ApproachOptions.smallest` wide; then the event acts from the
+        state at the bracket's end."""
         eq, path, opt = self.eq, self.path, self.options
-        step, below = opt.path_step, None
-        d_end = None if target.is_load else target.value
+        kind, load = target.kind, target.is_load
+        v = self.value(state, kind)
+        step = opt.path_step
+        bracket: tuple[float, str] | None = None      # (value past the event, its kind)
+        aim: float | None = None                      # the fold predicted inside the bracket
         while True:
-            load = float(state.fields.mean_pressure)
-            if d_end is None and load >= target.value:
-                return self.at_load(state, below, target)
-            if d_end is not None and abs(d_end - d) <= 1e-15:
+            if abs(target.value - v) <= 1e-14 * max(1.0, abs(target.value)):
                 return state
-            d_next = d + step if d_end is None else d + float(np.clip(d_end - d, -step, step))
-            tangent = path.tangent(state, False)
-            start = path.predicted(state, d_next - d, tangent=tangent)
-            last = d_next == d_end
-            trial = eq.solve(start, Control.penetration_of(d_next), use_fallback=False,
+            if bracket is not None and abs(bracket[0] - v) <= opt.smallest * (1 + 1e-9):
+                landing = self.act(bracket[1], state, Control(kind, bracket[0]), target)
+                if landing.outcome is not Outcome.CONVERGED:
+                    return landing
+                state, v = landing, bracket[0]
+                step, bracket, aim = opt.path_step, None, None
+                continue
+            v_next = self.next_value(v, step, target.value, bracket, aim)
+            tangent = path.tangent(state, load)
+            start = path.predicted(state, v_next - v, load=load, tangent=tangent)
+            last = v_next == target.value
+            trial = eq.solve(start, Control(kind, v_next), use_fallback=False,
                              budget=path.budget, refine=last, polish=last,
                              probation=path.probation, pace=path.pace,
                              reduction=0.0 if last else STEP_REDUCTION)
-            event = self.event(state, start, trial, d_end is None)
+            event = self.event(state, start, trial)
             if event is None:
-                step = path.next_step(step, start, state.edges, trial.edges)
-                below, state, d = state, trial, d_next
+                step = path.next_step(abs(v_next - v), start, state.edges, trial.edges)
+                state, v = trial, v_next
                 continue
-            if step > opt.smallest * (1 + 1e-9):
-                step *= 0.5
-                continue
-            if event == "closure":
-                return self.closed(trial, state, target)
-            landing = self.jump(event, state, below, d_next)
-            if landing.outcome is Outcome.FULL_CONTACT:
-                return self.closed(landing, state, target)
-            if not landing.converged:
-                return landing
-            below, state, d = None, landing, float(landing.fields.penetration)
-            step = opt.path_step
+            bracket, aim = (v_next, event), None
+            if event == "fold" and eq.adhesive:
+                aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
 
-    def event(self, state: State, start, trial: State, load_control: bool) -> str | None:
+    def next_value(self, v: float, step: float, end: float,
+                   bracket: tuple[float, str] | None, aim: float | None) -> float:
+        """The next step's value: a path step towards ``end``, or inside the bracket of an
+        event, just short of its predicted fold or at its middle."""
+        if bracket is None:
+            return v + float(np.clip(end - v, -step, step))
+        past, half = bracket[0], 0.5 * self.options.smallest
+        if aim is not None:
+            short = aim - np.sign(past - v) * half
+            if min(v, past) + half < short < max(v, past) - half:
+                return float(short)
+        return 0.5 * (v + past)
+
+    def event(self, state: State, start, trial: State) -> str | None:
         """What ends the branch within a step to ``trial`` (None: the step is on the branch)."""
         if trial.outcome is Outcome.FULL_CONTACT:
             return "closure"
@@ -145,8 +167,6 @@ class Approach:
         if (self.eq.adhesive and np.shape(trial.edges) == np.shape(state.edges)
                 and self._moved(start, trial.edges) > self.options.jumped):
             return "fold"
-        if load_control and trial.fields.mean_pressure < state.fields.mean_pressure:
-            return "load peak"
         return None
 
     @staticmethod
@@ -157,42 +177,50 @@ class Approach:
         half = np.repeat(0.5 * (edges[1::2] - edges[0::2]), 2)
         return float(np.max(np.abs(edges - start) / half))
 
-    def jump(self, event: str, state: State, below: State | None, d_next: float) -> State:
-        """The branch ends at ``state`` (an ``event`` located within the resolution): the edges'
-        motion from there, at the penetration ``d_next`` past a fold, or under load control at
-        the load just past the peak (the last increment's half beyond the state's load)."""
+    def fold_ahead(self, state: State, tangent, start, control: Control,
+                   v: float) -> float | None:
+        """Where the branch through ``state`` (at ``v``) folds within the failed step to
+        ``control`` that started from ``start = x + h·t`` along the tangent ``t``, or None.
+
+        The tangent cancels the residual's linear part, so at the start the residual is
+        ``½h²·r''``, and the branch's curvature is ``x'' = -J⁻¹r''`` (one residual evaluation
+        and the state's Jacobian). On a parabola ``v* - v = a(x - x*)²`` an edge's
+        ``x'/(2x'')`` is its distance to the fold; the earliest fold within the step is taken.
+        None when the start was scaled down (:meth:`Path.predicted`), no edge folds within the
+        step, or the derivatives are missing."""
+        x0 = np.asarray(state.edges, dtype=float)
+        change = control.value - v
+        if tangent is None or state.system is None or x0.size == 0 or change == 0:
+            return None
+        if not np.array_equal(np.asarray(start, dtype=float), x0 + tangent * change):
+            return None
+        d = state.system.derivatives(x0)
+        r = self.eq.residual_at(start, control)
+        if d is None or r is None or not np.all(np.isfinite(r)):
+            return None
+        try:
+            curvature = -np.linalg.solve(d.jacobian, 2.0 * np.asarray(r) / change**2)
+        except np.linalg.LinAlgError:
+            return None
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ahead = np.where(tangent * curvature > 0, tangent / (2.0 * curvature), np.inf)
+        distance = float(np.min(ahead))
+        return v + float(np.sign(change)) * distance if distance < abs(change) else None
+
+    def act(self, event: str, state: State, past: Control, target: Control) -> State:
+        """The event's action, located between ``state`` and the control value ``past``:
+        closure, or the jump (the edges' motion from ``state`` at ``past``)."""
         log = self.eq.log
-        if event == "load peak":
-            load = float(state.fields.mean_pressure)
-            rise = 0.0 if below is None else load - float(below.fields.mean_pressure)
-            control = Control.load_of(load + 0.5 * max(rise, 0.0))
-            _record(log, "load peak", penetration=state.fields.penetration, load=load)
-        else:
-            control = Control.penetration_of(d_next)
-            _record(log, "fold", penetration=state.fields.penetration)
-        landing = self.relax.run(state.edges, control)
+        if event == "closure":
+            return self.closed(State.full_contact(), state, target)
+        _record(log, "fold", **{past.kind: self.value(state, past.kind)})
+        landing = self.relax.run(state.edges, past, final=False)
+        if landing.outcome is Outcome.FULL_CONTACT:
+            return self.closed(landing, state, target)
         if landing.converged:
             _record(log, "jump", area=float(np.sum(landing.fields.mesh.width)),
-                    penetration=landing.fields.penetration)
+                    **{past.kind: past.value})
         return landing
 
-    def at_load(self, state: State, below: State | None, target: Control) -> State:
-        """The target load, reached within the last step (from ``below`` to ``state``): solved
-        from the closer of the two, predicted along the branch in load."""
-        eq, path = self.eq, self.path
-        p = float(state.fields.mean_pressure)
-        candidates = [state] if below is None else sorted(
-            (state, below), key=lambda s: abs(float(s.fields.mean_pressure) - target.value))
-        out = None
-        for start in candidates:
-            guess = path.predicted(start, target.value - float(start.fields.mean_pressure),
-                                   load=True)
-            out = eq.solve(guess, target)
-            if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT):
-                return out
-        _record(eq.log, "target not solved", load=p)
-        assert out is not None
-        return out
 
-
-__all__ = ["APPROACH_BUDGET", "Approach", "ApproachOptions"]
+__all__ = ["Approach", "ApproachOptions"]

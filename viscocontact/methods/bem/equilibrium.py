@@ -187,6 +187,10 @@ class Equilibrium:
             except TopologyChange as change:
                 log.evaluations += system.evaluations
                 log.event(change.reason)
+                for kind in ("merge", "detach"):
+                    if kind in change.reason:
+                        log.records.append({"kind": "merge" if kind == "merge"
+                                            else "detachment", "control": control.value})
                 if change.full_contact:
                     # accept closure only if a small-step march closes the contact too (a Newton
                     # trial step may overshoot across the period)
@@ -243,6 +247,8 @@ class Equilibrium:
                 merged, _, _, full = repair(np.concatenate([x, new]), MIN_WIDTH, MIN_GAP)
                 log.event(f"{len(regions)} contact(s) born" + (
                     " where the gap fell below the cohesive range" if snapped else ""))
+                log.records.append({"kind": "birth", "control": control.value,
+                                    "contacts": float(len(regions))})
                 if full:
                     return State.full_contact()
                 if self.adhesive:

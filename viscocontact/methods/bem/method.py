@@ -101,7 +101,7 @@ class Solve:
             out = self.equilibrium.solve(edges, target)
             if out.outcome is Outcome.NOT_CONVERGED and adhesive and not target.is_load:
                 # retracted past the fold of its branch, the contact pulls off
-                out = self.path.release(edges, target) or out
+                out = Relaxation(self.equilibrium, self.closed).run(edges, target)
             if out.outcome is Outcome.NOT_CONVERGED and not adhesive:
                 # an adhesionless equilibrium does not depend on the path: start afresh
                 self.log.event(f"no equilibrium from the given contact set ({out.message}); "
@@ -110,8 +110,6 @@ class Solve:
                 out = self.path.approach(target)
         else:
             out = self.path.approach(target)
-            if target.is_load and out.outcome is Outcome.CONVERGED and adhesive:
-                out = self.path.stable_under_load(out, target)
         return self.assemble(out, target, want_fields, time.perf_counter() - t0)
 
     def assemble(self, out: State, target: Control, want_fields: bool,
@@ -121,7 +119,8 @@ class Solve:
         sqrt_m2 = np.sqrt(self.prep.m2) if self.prep.m2 > 0 else np.nan
         adh = p.adhesion
         dx = float(adh.edge_advance())
-        extras = {"events": list(log.events), "residual_history": list(log.history),
+        extras = {"events": list(log.events), "path_events": list(log.records),
+                  "residual_history": list(log.history),
                   "seconds": elapsed, "method": BEM.name, "error_estimate": float("nan"),
                   "friction_dissipation": float("nan"), "friction_edges": float("nan"),
                   "outside_model": ""}

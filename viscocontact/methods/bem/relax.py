@@ -8,13 +8,15 @@ Griffith balance), at fixed speed ζ and fixed control, until the edges stop,
 
     dX_i/dt = -o_i r_i(X),   o_i = +1 for a right edge, -1 for a left one,
 
-so that an edge whose residual is negative (it would advance, :meth:`Path.wants_to_grow`)
-advances, and one with a positive residual recedes. The flow is integrated by linearly implicit
-Euler steps, ``(I/h + O J) δ = -O r``, with the step ``h`` chosen by step doubling so that no edge
+so that an edge whose residual is negative (it would advance) advances, and one with a
+positive residual recedes. The flow is integrated by linearly implicit Euler steps,
+``(I/h + O J) δ = -O r`` (``J`` refreshed after a rejected step and every
+:data:`JACOBIAN_AGE` steps), with the step ``h`` chosen by step doubling so that no edge
 moves more than ``tolerance`` of its contact's half-width (or of the mean half-width, when that
 is larger) away from the two half-steps; contacts that meet merge, contacts that vanish detach,
 contacts that close over the period close. As the edges slow down the steps grow and become
-Newton's; once ``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance, the
+Newton's; once every mode of the motion decays and Newton's step to the root is within the
+tolerance (or ``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance), the
 equilibrium solve (births, refinements) finishes from there.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
@@ -26,12 +28,18 @@ import attrs
 import numpy as np
 
 from ...contact.topology import TopologyChange, repair
+from .path import STEP_REDUCTION
 from .sets import MIN_GAP, MIN_WIDTH, Control
 from .state import Outcome, State
 
 #: The flow ends, and the equilibrium solve finishes, once ``max|r|`` is below this many times
 #: the solver's residual tolerance.
 SETTLED = 1e3
+#: The largest step times the fastest growth rate of an unstable mode of the motion.
+UNSTABLE_STEP = 0.5
+#: Accepted steps taken with one Jacobian (linearly implicit Euler stays consistent with an
+#: older one; a rejected step or a new contact set takes a fresh one).
+JACOBIAN_AGE = 8
 
 
 @attrs.frozen
@@ -67,11 +75,15 @@ class Relaxation:
         self.closed = closed
         self.tolerance = tolerance
         self.max_steps = max_steps
+        self._finish: dict = {}
 
-    def run(self, edges, control: Control) -> State:
+    def run(self, edges, control: Control, final: bool = True) -> State:
         """The state the edges' motion from ``edges`` ends in (not converged, with the reason,
-        when the motion does not end)."""
+        when the motion does not end). ``final = False``: an intermediate state of a path,
+        solved to :data:`~.path.STEP_REDUCTION` of its start's residual and not polished."""
         systems: list = []
+        self._finish = ({} if final else
+                        {"polish": False, "refine": False, "reduction": STEP_REDUCTION})
         try:
             return self._run(np.asarray(edges, dtype=float).copy(), control, systems)
         finally:
@@ -86,33 +98,48 @@ class Relaxation:
         systems.append(system)
         settled = SETTLED * self.eq.tolerances.residual
         h = None
+        shortcut = True         # finish with the equilibrium solve once Newton's step is short
+        J = None                # the Jacobian of the steps: kept while they are accepted
+        age = 0
         moved = 0
         for _ in range(self.max_steps):
-            rj = self._linearised(system, x)
-            if rj is None:
+            r = self._residual(system, x)
+            if r is None:
                 return self._failed(x, "met a contact set without a valid field")
-            r, J = rj
             if np.max(np.abs(r)) <= settled:
                 break
+            if J is None or age >= JACOBIAN_AGE:
+                J, age = self._jacobian(system, x), 0
+                if J is None:
+                    return self._failed(x, "met a contact set without derivatives")
+            if shortcut and self._near_stable_root(r, J, x):
+                # Newton's step lands on the root the motion is heading for, unless the state
+                # sits at a fold past which the root is gone: then the motion goes on
+                out = self.eq.solve(x, control, use_fallback=False, **self._finish)
+                if out.outcome is not Outcome.NOT_CONVERGED:
+                    self.eq.log.event(f"the edges moved in {moved} steps of their overdamped "
+                                      "motion")
+                    return out
+                shortcut = False
             if h is None:       # the first step moves the fastest edge a twentieth of a scale
                 h = 0.05 * float(np.min(_scale(x) / np.maximum(np.abs(r), 1e-300)))
+            # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign
+            # past 2/h): the step resolves the growth of every unstable mode of the motion
+            h = min(h, UNSTABLE_STEP / self._growth(J))
             whole = self._step(r, J, h)
             first = self._step(r, J, 0.5 * h)
             middle = None if first is None else x + first
-            rj_mid = None if middle is None else self._linearised(system, middle)
-            if whole is None or first is None or middle is None or rj_mid is None:
-                h *= 0.25
-                continue
-            second = self._step(rj_mid[0], rj_mid[1], 0.5 * h)
-            if second is None:
-                h *= 0.25
+            r_mid = None if middle is None else self._residual(system, middle)
+            second = None if r_mid is None else self._step(r_mid, J, 0.5 * h)
+            if whole is None or first is None or middle is None or second is None:
+                h, J = 0.25 * h, None
                 continue
             error = float(np.max(np.abs(whole - first - second) / _scale(x)))
             if error > self.tolerance:
-                h *= max(0.2, 0.9 * np.sqrt(self.tolerance / error))
+                h, J = h * max(0.2, 0.9 * np.sqrt(self.tolerance / error)), None
                 continue
             h *= min(4.0, 0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
-            moved += 1
+            moved, age = moved + 1, age + 1
             x, changed, _, full = repair(middle + second, MIN_WIDTH, MIN_GAP)
             if full:
                 if control.is_load and not self.closed.supports(control.value):
@@ -122,25 +149,53 @@ class Relaxation:
                 return State.full_contact()
             if not x.size:
                 self.eq.log.event("the edges' motion detached every contact")
-                return self.eq.solve(x, control)
+                return self.eq.solve(x, control, use_fallback=False, **self._finish)
             if changed:
-                system = self.eq.system(control, x)
+                system, J = self.eq.system(control, x), None
                 systems.append(system)
         else:
             return self._failed(x, f"did not stop within {self.max_steps} steps")
         self.eq.log.event(f"the edges moved in {moved} steps of their overdamped motion")
-        return self.eq.solve(x, control)
+        return self.eq.solve(x, control, use_fallback=False, **self._finish)
 
-    def _linearised(self, system, x):
-        """``(r, J)`` at ``x`` (None where ``x`` is no valid contact set)."""
+    @staticmethod
+    def _residual(system, x):
+        """``r`` at ``x`` (None where ``x`` is no valid contact set)."""
         try:
             r = system.residual(x)
-            if r is None or not np.all(np.isfinite(r)):
-                return None
+        except TopologyChange:
+            return None
+        return r if r is not None and np.all(np.isfinite(r)) else None
+
+    @staticmethod
+    def _jacobian(system, x):
+        try:
             J = system.jacobian(x)
         except TopologyChange:
             return None
-        return r, J
+        return J if J is not None and np.all(np.isfinite(J)) else None
+
+    def _near_stable_root(self, r, J, x) -> bool:
+        """Whether every mode of the motion decays and Newton's step to the root is within the
+        tolerance: the motion ends at that root, which the equilibrium solve finishes."""
+        if self._growth(J) > 1e-300:
+            return False
+        try:
+            newton = np.linalg.solve(J, -r)
+        except np.linalg.LinAlgError:
+            return False
+        return bool(np.max(np.abs(newton) / _scale(x)) <= self.tolerance)
+
+    @staticmethod
+    def _growth(J) -> float:
+        """The fastest growth rate of the linearised motion ``dδ/dt = -O J δ`` (0 when every
+        mode decays)."""
+        o = np.tile([-1.0, 1.0], len(J) // 2)
+        try:
+            rates = -np.linalg.eigvals(o[:, None] * J).real
+        except np.linalg.LinAlgError:
+            return 0.0
+        return float(max(rates.max(initial=0.0), 1e-300))
 
     @staticmethod
     def _step(r, J, h):

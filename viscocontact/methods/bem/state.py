@@ -54,6 +54,8 @@ class SolveLog:
         self.iterations = 0
         self.evaluations = 0
         self.events: list[str] = EventList("bem")       # logged as they happen
+        #: typed events of the path (``{"kind": ..., <values>}``; see :mod:`.approach`)
+        self.records: list[dict] = []
         self.history: list[float] = []
 
     def event(self, text: str) -> None:

@@ -1,0 +1,131 @@
+"""The approach history's continuation: its events (each fires on a case), the fold estimate on
+a branch whose fold is known, and the answer converged in the step."""
+from __future__ import annotations
+
+import attrs
+import numpy as np
+import pytest
+
+from viscocontact.adhesion import EnergyBalance
+from viscocontact.methods.bem.approach import Approach, ApproachOptions
+from viscocontact.methods.bem.sets import Control
+from viscocontact.methods.bem.state import Outcome, State
+from viscocontact.problem import ContactProblem, Discretization
+from viscocontact.profiles import SelfAffineProfile, Sinusoid
+from viscocontact.rheology import StandardLinearSolid
+from viscocontact.solvers import Broyden, Newton
+
+SLS = StandardLinearSolid(beta=10.0)
+
+
+def rough12(path_step=0.05, **control):
+    """A 12-scale self-affine profile, adhesive (γ̃ = 2.387e-7, Broyden, ζ = 0.1): contacts are
+    born, fold, jump and merge on the way into one."""
+    return ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
+                          rheology=SLS, solver=Broyden(), adhesion=EnergyBalance(gamma=2.387e-7),
+                          zeta=0.1, discretization=Discretization(elements=32,
+                                                                  path_step=path_step),
+                          **(control or {"penetration": 0.4}))
+
+
+def kinds(result) -> set:
+    return {e["kind"] for e in result.extras["path_events"]}
+
+
+def test_a_rough_approach_meets_births_folds_jumps_and_merges_and_is_converged_in_the_step():
+    """In penetration control the approach meets every kind of event of a rough contact, and
+    a four times finer path (its events located four times closer) reaches the same
+    equilibrium: the same contact, Ã to the solver's tolerance (measured 5e-12)."""
+    coarse, fine = (rough12(path_step=0.05 / k).solve() for k in (1, 4))
+    assert coarse.converged and fine.converged
+    assert {"birth", "fold", "jump", "merge"} <= kinds(coarse)
+    assert coarse.n_contacts == fine.n_contacts
+    assert coarse.area == pytest.approx(fine.area, rel=1e-8)
+    jumps = [e for e in coarse.extras["path_events"] if e["kind"] == "jump"]
+    folds = [e for e in coarse.extras["path_events"] if e["kind"] == "fold"]
+    assert len(jumps) == len(folds) and all("penetration" in e for e in jumps)
+
+
+@pytest.mark.slow
+def test_under_load_control_the_rough_approach_is_converged_in_the_step():
+    coarse, fine = (rough12(path_step=0.05 / k, mean_pressure=0.2).solve() for k in (1, 4))
+    assert coarse.converged and fine.converged and coarse.n_contacts == fine.n_contacts
+    assert coarse.area == pytest.approx(fine.area, rel=1e-8)
+
+
+def test_past_its_load_peak_a_wavy_contact_jumps_to_closure_under_load_control():
+    """The adhesive sinusoid (Λ̃ = 0.05, γ̃ = 1e-5, β = 10, ζ = 0.01) at p̃∞ = 0.6: its branch's
+    load peaks below the target (a fold in the load), the edges' motion past it closes the
+    contact, and a closed adhesive contact carries the load."""
+    problem = ContactProblem(profile=Sinusoid(amplitude=0.05), rheology=SLS, solver=Broyden(),
+                             adhesion=EnergyBalance(gamma=1e-5), mean_pressure=0.6, zeta=0.01)
+    result = problem.solve()
+    assert result.converged and result.full_contact
+    events = result.extras["path_events"]
+    assert [e["kind"] for e in events][-2:] == ["fold", "closure"]
+    assert "mean_pressure" in events[-2] and events[-2]["mean_pressure"] < 0.6
+
+
+def test_the_target_ends_the_path_exactly():
+    for control in ({"penetration": 0.3}, {"mean_pressure": 0.1}):
+        problem = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=SLS, solver=Newton(),
+                                 adhesion=EnergyBalance(gamma=1e-4), zeta=1e-3, **control)
+        result = problem.solve()
+        key, value = next(iter(control.items()))
+        assert result.converged and getattr(result, key) == pytest.approx(value, abs=1e-9)
+
+
+class _Parabola:
+    """Residuals with a parabolic fold: ``r₀ = a(x₀ - x*)² - (v* - v)`` (the left edge of the
+    first contact runs into the fold at ``v*``), every other edge ``rᵢ = xᵢ - xᵢ⁰ - sᵢv``
+    (linear). The stand-in of both the state's edge system and the equilibrium."""
+
+    def __init__(self, a, x_star, fold, x_lin, s_lin):
+        self.a, self.x_star, self.fold = a, x_star, fold
+        self.x_lin, self.s_lin = np.asarray(x_lin, float), np.asarray(s_lin, float)
+
+    def residual_at(self, x, control):
+        v = control.value
+        return np.concatenate([[self.a * (x[0] - self.x_star) ** 2 - (self.fold - v)],
+                               x[1:] - self.x_lin - self.s_lin * v])
+
+    def on_branch(self, v):
+        return np.concatenate([[self.x_star - np.sqrt((self.fold - v) / self.a)],
+                               self.x_lin + self.s_lin * v])
+
+    def derivatives(self, x):
+        from viscocontact.methods.bem.system import EdgeDerivatives
+
+        J = np.eye(len(x))
+        J[0, 0] = 2.0 * self.a * (x[0] - self.x_star)
+        c = np.concatenate([[1.0], -self.s_lin])
+        return EdgeDerivatives(jacobian=J, control=c, pressure=np.zeros(len(x) + 1))
+
+
+def _fold_ahead(v0, step, scale=1.0):
+    branch = _Parabola(a=40.0, x_star=-0.5, fold=0.3, x_lin=[-0.2, 1.0, 1.2],
+                       s_lin=[0.0, 0.0, 5.0])
+    x0 = branch.on_branch(v0)
+    d = branch.derivatives(x0)
+    tangent = -np.linalg.solve(d.jacobian, d.control)
+    state = State(outcome=Outcome.CONVERGED, edges=x0, system=branch)
+    approach = Approach.__new__(Approach)
+    approach.eq = branch
+    return approach.fold_ahead(state, tangent, x0 + scale * tangent * step,
+                               Control.penetration_of(v0 + step), v0)
+
+
+def test_a_failed_steps_start_puts_the_fold_where_a_parabolic_branch_folds():
+    """On ``v* - v = a(x - x*)²`` the residual at the start predicted along the tangent is
+    ``½h²r''`` exactly, so the estimate is the fold (although another edge runs faster); a
+    step short of the fold, or a start scaled down from the tangent's, gives none."""
+    assert _fold_ahead(0.25, 0.08) == pytest.approx(0.3, rel=1e-12)
+    assert _fold_ahead(0.25, 0.04) is None
+    assert _fold_ahead(0.25, 0.08, scale=0.5) is None
+
+
+def test_the_options_are_one_frozen_object():
+    options = ApproachOptions(path_step=0.05)
+    assert options.smallest == pytest.approx(0.05 / 256)
+    with pytest.raises(attrs.exceptions.FrozenInstanceError):
+        options.resolution = 0.5  # type: ignore[misc]
