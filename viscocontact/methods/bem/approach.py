@@ -64,7 +64,8 @@ class ApproachOptions:
 def _record(log, kind: str, **values) -> None:
     """A typed event in the solve's log (``log.records``) and its prose (``log.events``)."""
     log.records.append({"kind": kind, **{k: float(v) for k, v in values.items()}})
-    log.event(f"{kind} at " + ", ".join(f"{k} = {v:.6g}" for k, v in values.items()))
+    where = ", ".join(f"{k} = {v:.6g}" for k, v in values.items())
+    log.event(f"{kind} at {where}" if where else kind)
 
 
 class Approach:
@@ -83,6 +84,14 @@ class Approach:
             return State.no_contact()
         d0, edges = first_touch(self.eq.prep.shape)
         state = self.relax.run(edges, Control.penetration_of(d0), final=False)
+        if state.outcome is Outcome.NOT_CONVERGED and "no steady state" in state.message:
+            # the first contact travels along the profile (a toughened trailing edge drags it):
+            # it never settles before it is loaded, so it is loaded at once, to the target
+            _record(self.eq.log, "no steady first contact", penetration=d0)
+            state = self.relax.run(edges, target)
+            if state.outcome is Outcome.FULL_CONTACT:
+                return self.closed(state, None, target)
+            return state
         if state.outcome is Outcome.FULL_CONTACT:   # the first contact settles
             return self.closed(state, None, target)
         if not state.converged:
