@@ -142,7 +142,10 @@ class Relaxation:
                 continue
             h *= min(4.0, 0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
             moved, age = moved + 1, age + 1
-            x, changed, _, full = repair(middle + second, MIN_WIDTH, MIN_GAP)
+            x, changed, reason, full = repair(middle + second, MIN_WIDTH, MIN_GAP)
+            for kind, word in (("merge", "merge"), ("detachment", "detach")):
+                if changed and word in reason:
+                    self.eq.log.records.append({"kind": kind, "control": control.value})
             track.append((float(np.sum(x[1::2] - x[0::2])), float(np.mean(x)), len(x)))
             if changed:
                 track = track[-1:]
