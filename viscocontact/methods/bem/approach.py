@@ -64,7 +64,8 @@ class ApproachOptions:
 def _record(log, kind: str, **values) -> None:
     """A typed event in the solve's log (``log.records``) and its prose (``log.events``)."""
     log.records.append({"kind": kind, **{k: float(v) for k, v in values.items()}})
-    log.event(f"{kind} at " + ", ".join(f"{k} = {v:.6g}" for k, v in values.items()))
+    where = ", ".join(f"{k} = {v:.6g}" for k, v in values.items())
+    log.event(f"{kind} at {where}" if where else kind)
 
 
 class Approach:
@@ -83,6 +84,14 @@ class Approach:
             return State.no_contact()
         d0, edges = first_touch(self.eq.prep.shape)
         state = self.relax.run(edges, Control.penetration_of(d0), final=False)
+        if state.outcome is Outcome.NOT_CONVERGED and "no steady state" in state.message:
+            # the first contact travels along the profile (a toughened trailing edge drags it):
+            # it never settles before it is loaded, so it is loaded at once, to the target
+            _record(self.eq.log, "no steady first contact", penetration=d0)
+            state = self.relax.run(edges, target)
+            if state.outcome is Outcome.FULL_CONTACT:
+                return self.closed(state, None, target)
+            return state
         if state.outcome is Outcome.FULL_CONTACT:   # the first contact settles
             return self.closed(state, None, target)
         if not state.converged:
@@ -115,20 +124,22 @@ class Approach:
         eq, path, opt = self.eq, self.path, self.options
         kind, load = target.kind, target.is_load
         v = self.value(state, kind)
-        step = opt.path_step
-        bracket: tuple[float, str] | None = None      # (value past the event, its kind)
+        step = opt.path_step                          # in units of the penetration
+        scale = self.scale(state, load, 1.0)          # |d(control)/dΔ̃| along the branch
+        bracket: tuple[float, str, float] | None = None   # (value past the event, kind, width)
         aim: float | None = None                      # the fold predicted inside the bracket
         while True:
             if abs(target.value - v) <= 1e-14 * max(1.0, abs(target.value)):
                 return state
-            if bracket is not None and abs(bracket[0] - v) <= opt.smallest * (1 + 1e-9):
+            if bracket is not None and abs(bracket[0] - v) <= bracket[2] * (1 + 1e-9):
                 landing = self.act(bracket[1], state, Control(kind, bracket[0]), target)
                 if landing.outcome is not Outcome.CONVERGED:
                     return landing
                 state, v = landing, bracket[0]
                 step, bracket, aim = opt.path_step, None, None
+                scale = self.scale(state, load, scale)
                 continue
-            v_next = self.next_value(v, step, target.value, bracket, aim)
+            v_next = self.next_value(v, step * scale, target.value, bracket, aim)
             tangent = path.tangent(state, load)
             start = path.predicted(state, v_next - v, load=load, tangent=tangent)
             last = v_next == target.value
@@ -138,20 +149,49 @@ class Approach:
                              reduction=0.0 if last else STEP_REDUCTION)
             event = self.event(state, start, trial)
             if event is None:
-                step = path.next_step(abs(v_next - v), start, state.edges, trial.edges)
+                step = path.next_step(abs(v_next - v) / scale, start, state.edges, trial.edges)
                 state, v = trial, v_next
+                scale = self.scale(state, load, scale)
                 continue
-            bracket, aim = (v_next, event), None
+            if bracket is None:
+                bracket = (v_next, event, opt.smallest * scale)
+            bracket, aim = (v_next, event, bracket[2]), None
             if event == "fold" and eq.adhesive:
                 aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
 
+    @staticmethod
+    def scale(state: State, load: bool, previous: float) -> float:
+        """``|d(control)/dΔ̃|`` along the branch at ``state``: 1 in penetration control, the
+        branch's stiffness ``|dp̃∞/dΔ̃|`` in load control (from the state's derivatives), so that
+        a step of the load moves the contact about as far as the same step of the penetration
+        would. ``previous`` where the derivatives are missing or the branch is flat."""
+        if not load:
+            return 1.0
+        system = state.system
+        if system is None or np.size(state.edges) == 0:
+            return previous
+        d = system.derivatives(np.asarray(state.edges, dtype=float))
+        if d is None:
+            return previous
+        try:
+            t = -np.linalg.solve(d.jacobian, d.control)
+        except np.linalg.LinAlgError:
+            return previous
+        px, pd = d.pressure[:-1], d.pressure[-1]
+        if system.control.is_load:          # dx/dp̃∞: dΔ̃/dp̃∞ = (1 - ∂p/∂x·t)/(∂p/∂Δ̃)
+            k = pd / (1.0 - float(px @ t)) if 1.0 != float(px @ t) else np.inf
+        else:                                # dx/dΔ̃: dp̃∞/dΔ̃ = ∂p/∂x·t + ∂p/∂Δ̃
+            k = float(px @ t) + pd
+        k = abs(float(k))
+        return k if np.isfinite(k) and k > 1e-3 * previous else previous
+
     def next_value(self, v: float, step: float, end: float,
-                   bracket: tuple[float, str] | None, aim: float | None) -> float:
-        """The next step's value: a path step towards ``end``, or inside the bracket of an
-        event, just short of its predicted fold or at its middle."""
+                   bracket: tuple[float, str, float] | None, aim: float | None) -> float:
+        """The next step's value: a step towards ``end``, or inside the bracket of an event,
+        just short of its predicted fold or at its middle."""
         if bracket is None:
             return v + float(np.clip(end - v, -step, step))
-        past, half = bracket[0], 0.5 * self.options.smallest
+        past, half = bracket[0], 0.5 * bracket[2]
         if aim is not None:
             short = aim - np.sign(past - v) * half
             if min(v, past) + half < short < max(v, past) - half:

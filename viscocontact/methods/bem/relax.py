@@ -27,7 +27,7 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
-from ...contact.topology import TopologyChange, repair
+from ...contact.topology import TWO_PI, TopologyChange, repair
 from .path import STEP_REDUCTION
 from .sets import MIN_GAP, MIN_WIDTH, Control
 from .state import Outcome, State
@@ -99,6 +99,8 @@ class Relaxation:
         settled = SETTLED * self.eq.tolerances.residual
         h = None
         shortcut = True         # finish with the equilibrium solve once Newton's step is short
+        track: list = []        # (total width, mean edge position, edges) since the last
+        #                         change of the contact set
         J = None                # the Jacobian of the steps: kept while they are accepted
         age = 0
         moved = 0
@@ -140,7 +142,16 @@ class Relaxation:
                 continue
             h *= min(4.0, 0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
             moved, age = moved + 1, age + 1
-            x, changed, _, full = repair(middle + second, MIN_WIDTH, MIN_GAP)
+            x, changed, reason, full = repair(middle + second, MIN_WIDTH, MIN_GAP)
+            for kind, word in (("merge", "merge"), ("detachment", "detach")):
+                if changed and word in reason:
+                    self.eq.log.records.append({"kind": kind, "control": control.value})
+            track.append((float(np.sum(x[1::2] - x[0::2])), float(np.mean(x)), len(x)))
+            if changed:
+                track = track[-1:]
+            if self._travels(track):
+                return self._failed(x, "carries the contacts round the period: no steady "
+                                       "state at this control")
             if full:
                 if control.is_load and not self.closed.supports(control.value):
                     return self._failed(x, "closed the contact, which does not carry this "
@@ -157,6 +168,13 @@ class Relaxation:
             return self._failed(x, f"did not stop within {self.max_steps} steps")
         self.eq.log.event(f"the edges moved in {moved} steps of their overdamped motion")
         return self.eq.solve(x, control, use_fallback=False, **self._finish)
+
+    @staticmethod
+    def _travels(track: list) -> bool:
+        """Whether the contacts have moved round a whole period of the profile without
+        settling: a contact that travels along the profile (a trailing edge that drags it), which
+        a steady state does not do."""
+        return len(track) > 1 and abs(track[-1][1] - track[0][1]) > TWO_PI
 
     @staticmethod
     def _residual(system, x):
