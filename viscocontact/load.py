@@ -1,4 +1,4 @@
-"""The load control of a scene: the mean pressure p̃∞ or the penetration Δ̃ (eq. 4.17)."""
+"""The load control of a scene: the mean pressure p̃∞ or the penetration Δ̃ (equation 4.17)."""
 from __future__ import annotations
 
 from typing import Any, Mapping, cast
@@ -17,7 +17,7 @@ def _optional_number(inst, attribute, value):
 
 @attrs.frozen(kw_only=True)
 class Load:
-    """The load control: exactly one of ``mean_pressure`` (p̃∞, eq. 4.17, any finite real;
+    """The load control: exactly one of ``mean_pressure`` (p̃∞, equation 4.17, any finite real;
     negative is a tensile load, legal with adhesion) and ``penetration`` (Δ̃ = Δ/Λ, finite)."""
 
     mean_pressure: float | None = attrs.field(default=None, converter=_as_float,

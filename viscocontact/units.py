@@ -1,4 +1,4 @@
-"""Units: a scene's ``[physical]`` table into the groups of eq. 4.17, and a result back.
+"""Units: a scene's ``[physical]`` table into the groups of equation 4.17, and a result back.
 
 The numerics run on dimensionless arrays in the thesis's groups (eq. 4.17); SI units are
 converted at this one boundary, both ways.
