@@ -44,18 +44,10 @@ from ..result import ContactResult, SolveStatus
 from .kernels import ArealKernel
 from .problem import ArealProblem
 from .results import area_fraction, cell_rise, friction, patch_statistics
+from .planning import BYTES_PER_CELL, PLANNED_CONTACT, RESTART
 
 #: The ladder of grids begins at this many cells per side or fewer.
 LADDER_START = 64
-#: Bytes per cell of a solve besides the GMRES basis (heights, slopes, pressure, gaps, search
-#: directions, the eigenvalue tables and the FFT work arrays): the peak resident memory of a
-#: 1024² solve at 10 % contact rose by 160 bytes per cell over the interpreter's, GMRES basis
-#: included (``benchmarks/areal.py``).
-BYTES_PER_CELL = 200
-#: Restart length of the active set's GMRES (its basis and directions: ``2·restart`` vectors).
-RESTART = 60
-#: Share of the cells the GMRES basis is planned for (its vectors live on the loaded cells).
-PLANNED_CONTACT = 0.25
 
 
 @attrs.frozen(kw_only=True, eq=False)

@@ -7,8 +7,17 @@ import numpy as np
 from ..kernels.clausen import TWO_PI
 from ..methods.spectral.cohesive import CELLS_PER_ZONE, zone_cells
 from ..plan import PlanStep, SolvePlan
-from .method import BYTES_PER_CELL, PLANNED_CONTACT, RESTART
 
+
+#: Bytes per cell of a solve besides the GMRES basis (heights, slopes, pressure, gaps, search
+#: directions, the eigenvalue tables and the FFT work arrays): the peak resident memory of a
+#: 1024² solve at 10 % contact rose by 160 bytes per cell over the interpreter's, GMRES basis
+#: included (``benchmarks/areal.py``).
+BYTES_PER_CELL = 200
+#: Restart length of the active set's GMRES (its basis and directions: ``2·restart`` vectors).
+RESTART = 60
+#: Share of the cells the GMRES basis is planned for (its vectors live on the loaded cells).
+PLANNED_CONTACT = 0.25
 
 def plan_steps(method, problem) -> SolvePlan:
     """The decisions of ``method`` (an :class:`~viscocontact.areal.method.ArealSpectral`) on

@@ -27,7 +27,7 @@ def build_surface(table: Mapping[str, Any]) -> Surface:
     ValidationError
         Naming ``surface.kind`` (unknown kind, with the registered ones) or ``surface.<key>``.
     """
-    from ...scene import _instantiate
+    from ...components import _instantiate
 
     registry = _registry.REGISTRIES["surfaces"]
     params = dict(table)
