@@ -98,6 +98,15 @@ class Approach:
             return state
         return self.climb(state, target)
 
+    def from_full_contact(self, target: Control) -> State:
+        """Continue from a closed contact. With infinitely short-range adhesion a closed
+        interface has no flaw to open from (the energy release of a vanishing gap is zero), so
+        it stays closed at any load; without adhesion it stays closed while it carries no
+        tension, and otherwise the contact is found afresh by the approach."""
+        if self.path.closed.holds(target):
+            return State.full_contact()
+        return self.run(target)
+
     @staticmethod
     def value(state: State, kind: str) -> float:
         """The state's value of the controlled quantity."""
@@ -125,7 +134,9 @@ class Approach:
         kind, load = target.kind, target.is_load
         v = self.value(state, kind)
         step = opt.path_step                          # in units of the penetration
-        scale = self.scale(state, load, 1.0)          # |d(control)/dΔ̃| along the branch
+        # |d(control)/dΔ̃| of the first contact's branch, at least 1: the unit of the steps and
+        # of the events' resolution, fixed for the solve
+        scale = max(1.0, self.scale(state, load, 1.0))
         bracket: tuple[float, str, float] | None = None   # (value past the event, kind, width)
         aim: float | None = None                      # the fold predicted inside the bracket
         while True:
@@ -137,7 +148,6 @@ class Approach:
                     return landing
                 state, v = landing, bracket[0]
                 step, bracket, aim = opt.path_step, None, None
-                scale = self.scale(state, load, scale)
                 continue
             v_next = self.next_value(v, step * scale, target.value, bracket, aim)
             tangent = path.tangent(state, load)
@@ -151,11 +161,8 @@ class Approach:
             if event is None:
                 step = path.next_step(abs(v_next - v) / scale, start, state.edges, trial.edges)
                 state, v = trial, v_next
-                scale = self.scale(state, load, scale)
                 continue
-            if bracket is None:
-                bracket = (v_next, event, opt.smallest * scale)
-            bracket, aim = (v_next, event, bracket[2]), None
+            bracket, aim = (v_next, event, opt.smallest * scale), None
             if event == "fold" and eq.adhesive:
                 aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
 
@@ -164,7 +171,8 @@ class Approach:
         """``|d(control)/dΔ̃|`` along the branch at ``state``: 1 in penetration control, the
         branch's stiffness ``|dp̃∞/dΔ̃|`` in load control (from the state's derivatives), so that
         a step of the load moves the contact about as far as the same step of the penetration
-        would. ``previous`` where the derivatives are missing or the branch is flat."""
+        would (a glassy solid's loads are β times larger). ``previous`` where the derivatives
+        are missing or the branch is flat."""
         if not load:
             return 1.0
         system = state.system

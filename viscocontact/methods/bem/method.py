@@ -25,6 +25,7 @@ from .checks import Checks
 from .closed import ClosedContact
 from .equilibrium import Equilibrium
 from .meshing import MeshPolicy, mesh_spec
+from .approach import Approach, ApproachOptions
 from .path import Path
 from .relax import RelaxFrom, Relaxation
 from .sets import Control
@@ -77,6 +78,7 @@ class Solve:
             tolerances=attrs.evolve(tol, residual=tol.residual * residual_scale(prep.kernel)),
             max_restarts=problem.max_restarts, checks=self.checks, log=self.log)
         self.path = Path(self.equilibrium, self.closed, disc.path_step)
+        self.approach = Approach(self.path, ApproachOptions(path_step=disc.path_step))
 
     def run(self, initial, want_fields: bool) -> ContactResult:
         t0 = time.perf_counter()
@@ -95,7 +97,7 @@ class Solve:
             out = Relaxation(self.equilibrium, self.closed, initial.tolerance).run(
                 initial.edges, target)
         elif initial is not None and getattr(initial, "full_contact", False):
-            out = self.path.from_full_contact(target)
+            out = self.approach.from_full_contact(target)
         elif initial is not None:
             edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()
             out = self.equilibrium.solve(edges, target)
@@ -107,9 +109,9 @@ class Solve:
                 self.log.event(f"no equilibrium from the given contact set ({out.message}); "
                                "solved from first touch")
                 self.policy.forget()       # the same answer as a solve from first touch
-                out = self.path.approach(target)
+                out = self.approach.run(target)
         else:
-            out = self.path.approach(target)
+            out = self.approach.run(target)
         return self.assemble(out, target, want_fields, time.perf_counter() - t0)
 
     def assemble(self, out: State, target: Control, want_fields: bool,

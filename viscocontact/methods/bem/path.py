@@ -68,13 +68,6 @@ class Path:
         self.predict = predict
         self.log = equilibrium.log
 
-    def approach(self, target: Control) -> State:
-        """The equilibrium at ``target`` reached from first touch: the approach history
-        (:class:`~viscocontact.methods.bem.approach.Approach`)."""
-        from .approach import Approach, ApproachOptions
-
-        return Approach(self, ApproachOptions(path_step=self.path_step)).run(target)
-
     def next_step(self, step: float, predicted, before, after) -> float:
         """The step after a converged one, from how far the corrector moved the predicted edges
         relative to the half-widths (``ρ``): ``step·√(ρ*/ρ)`` with ``ρ* =``
@@ -176,11 +169,3 @@ class Path:
         return x if changed else out
 
     # ---- stability under load control ----------------------------------------------------------
-    def from_full_contact(self, target: Control) -> State:
-        """Continue from a closed contact. With infinitely short-range adhesion a closed
-        interface has no flaw to open from (the energy release of a vanishing gap is zero), so
-        it stays closed at any load; without adhesion it stays closed while it carries no
-        tension, and otherwise the contact is found afresh along the approach path."""
-        if self.closed.holds(target):
-            return State.full_contact()
-        return self.approach(target)
