@@ -27,7 +27,7 @@ POINTS = ([(seed, 1e-2, 0.1) for seed in range(11, 17)]
 SAME = 1e-6
 
 
-def solve(seed: int, zeta: float, load: float, path_step: float):
+def solve(seed: int, zeta: float, load: float, path_step: float, approach: str = "stepped"):
     from viscocontact.adhesion import EnergyBalance
     from viscocontact.problem import ContactProblem, Discretization
     from viscocontact.methods.bem import BEM
@@ -39,7 +39,8 @@ def solve(seed: int, zeta: float, load: float, path_step: float):
                              profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
                              rheology=StandardLinearSolid(beta=10.0), solver=Broyden(),
                              adhesion=EnergyBalance(gamma=2.387e-7), mean_pressure=load,
-                             zeta=zeta, discretization=Discretization(path_step=path_step))
+                             zeta=zeta, discretization=Discretization(path_step=path_step,
+                                                                     approach=approach))
     t = time.perf_counter()
     r = problem.solve()
     return {"seed": seed, "zeta": zeta, "load": load, "path_step": path_step,
@@ -53,6 +54,8 @@ def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--finer", type=float, default=4.0, help="path step divisor of the reference")
     ap.add_argument("--points", default=None, help="comma-separated indices into the 15 points")
+    ap.add_argument("--approach", default="stepped", choices=("stepped", "events"),
+                    help="the approach of the BEM (Discretization.approach)")
     ap.add_argument("--jsonl", default=None, help="append one JSON line per solve to this file")
     args = ap.parse_args(argv)
     points = ([POINTS[int(i)] for i in args.points.split(",")] if args.points else POINTS)
@@ -61,8 +64,8 @@ def main(argv=None) -> None:
           f"{'area (finer)':>12s} {'ev':>5s} | same")
     totals, agree = [0, 0], 0
     for seed, zeta, load in points:
-        default = solve(seed, zeta, load, step)
-        finer = solve(seed, zeta, load, step / args.finer)
+        default = solve(seed, zeta, load, step, args.approach)
+        finer = solve(seed, zeta, load, step / args.finer, args.approach)
         same = (default["converged"] and finer["converged"]
                 and abs(default["area"] - finer["area"]) <= SAME * abs(finer["area"]))
         agree += same

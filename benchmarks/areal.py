@@ -1,7 +1,7 @@
 """The areal spectral method: grid size against time, iterations and memory.
 
     python benchmarks/areal.py [--sizes 128,256,512,1024] [--zeta 1] [--load 1.0]
-                               [--workers 2] [--repeats 1] [--out benchmarks/results/areal.json]
+                               [--workers 2] [--repeats 1] [--out benchmarks/results/raw/areal.json]
 
 The scene of the acceptance run: an isotropic self-affine surface (H = 0.8, wavenumbers 1 to
 ``--q-max`` in units of q0, rms slope 0.1, seed 0; the same surface sampled on every grid) on a
@@ -97,7 +97,8 @@ def main(argv=None) -> None:
     ap.add_argument("--repeats", type=int, default=1)
     ap.add_argument("--adhesion", default="",
                     help="Maugis-Dugdale 'gamma,range' (γ̃, h̃0), e.g. 1e-4,3e-2; none by default")
-    ap.add_argument("--out", default=str(Path(__file__).parent / "results" / "areal.json"))
+    ap.add_argument("--out",
+                    default=str(Path(__file__).parent / "results" / "raw" / "areal.json"))
     ap.add_argument("--one", type=int, help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     if args.one:

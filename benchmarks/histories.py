@@ -3,7 +3,7 @@
 Every scene is swept over the same ζ range recorded at 1, 3 and 8 points per decade, under each
 history, and the curves are compared at the common ζ (the whole decades): Ã within 1e-3 of
 max(Ã, 0.1) and μ within 1e-2 of max(|μ|, 0.01). Prints one table row per scene, load and
-history and writes ``benchmarks/results/histories.json``.
+history and writes ``benchmarks/results/raw/histories.json``.
 
 Usage::
 
@@ -74,7 +74,7 @@ def main(argv=None) -> int:
     parser.add_argument("--histories", default="approach,speed-ramp")
     parser.add_argument("--workers", type=int, default=1)
     parser.add_argument("--elements", type=int, default=None)
-    parser.add_argument("--out", default=str(HERE / "results" / "histories.json"))
+    parser.add_argument("--out", default=str(HERE / "results" / "raw" / "histories.json"))
     args = parser.parse_args(argv)
 
     start, stop = (math.log10(float(v)) for v in args.zetas.split(":"))

@@ -83,7 +83,9 @@ class Approach:
             # contact): no contact yet
             return State.no_contact()
         d0, edges = first_touch(self.eq.prep.shape)
-        state = self.relax.run(edges, Control.penetration_of(d0), final=False)
+        touch = Control.penetration_of(d0)
+        edges = self.with_field(edges, touch)
+        state = self.relax.run(edges, touch, final=False)
         if state.outcome is Outcome.NOT_CONVERGED and "no steady state" in state.message:
             # the first contact travels along the profile (a toughened trailing edge drags it):
             # it never settles before it is loaded, so it is loaded at once, to the target
@@ -92,11 +94,45 @@ class Approach:
             if state.outcome is Outcome.FULL_CONTACT:
                 return self.closed(state, None, target)
             return state
+        if state.outcome is Outcome.NOT_CONVERGED and "without a valid field" in state.message:
+            # the model has no field at any first contact (Maugis-Dugdale zones longer than
+            # the contact whose equations have no solution there): loaded at once, the target
+            # solved from the first contact widened
+            _record(self.eq.log, "no first contact", penetration=d0)
+            return self.at_once(edges, target)
         if state.outcome is Outcome.FULL_CONTACT:   # the first contact settles
             return self.closed(state, None, target)
         if not state.converged:
             return state
         return self.climb(state, target)
+
+    def at_once(self, edges, target: Control) -> State:
+        """The target solved directly from the first contact ``edges`` widened 1, 4 and 16
+        times (the first that converges)."""
+        x = np.asarray(edges, dtype=float)
+        centre, half = 0.5 * (x[0] + x[1]), 0.5 * (x[1] - x[0])
+        out = State(outcome=Outcome.NOT_CONVERGED, edges=x, message="no first contact")
+        for factor in (1.0, 4.0, 16.0):
+            w = min(factor * half, 0.45 * np.pi * 2)
+            out = self.eq.solve(np.array([centre - w, centre + w]), target)
+            if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT):
+                return out
+        return out
+
+    def with_field(self, edges, touch: Control):
+        """The first contact the edges' motion starts from: the first-touch guess, widened by
+        doublings while the adhesion model has no field there (a Maugis–Dugdale zone longer than
+        the contact: its bounded-stress equations have no solution), at most to half the
+        period."""
+        x = np.asarray(edges, dtype=float)
+        centre, half = 0.5 * (x[0] + x[1]), 0.5 * (x[1] - x[0])
+        while half < np.pi / 2:
+            r = self.eq.residual_at(x, touch)
+            if r is not None and np.all(np.isfinite(r)):
+                break
+            half *= 2.0
+            x = np.array([centre - half, centre + half])
+        return x
 
     def from_full_contact(self, target: Control) -> State:
         """Continue from a closed contact. With infinitely short-range adhesion a closed
@@ -131,38 +167,57 @@ class Approach:
         the bracket is :attr:`ApproachOptions.smallest` wide; then the event acts from the
         state at the bracket's end."""
         eq, path, opt = self.eq, self.path, self.options
-        kind, load = target.kind, target.is_load
+        # an adhesionless contact's load rises with the penetration (no folds): its steps are
+        # in the penetration until the load passes the target, which is then solved between
+        by_depth = target.is_load and not eq.adhesive
+        kind, load = ("penetration", False) if by_depth else (target.kind, target.is_load)
+        end = np.inf if by_depth else target.value
+        below: State | None = None
+        above: State | None = None                    # the last step that passed the target
         v = self.value(state, kind)
         step = opt.path_step                          # in units of the penetration
-        # |d(control)/dΔ̃| of the first contact's branch, at least 1: the unit of the steps and
-        # of the events' resolution, fixed for the solve
+        # |d(control)/dΔ̃| of the first contact's branch, at least 1: the unit of the steps,
+        # fixed for the solve (the events are located to ApproachOptions.smallest of the control)
         scale = max(1.0, self.scale(state, load, 1.0))
         bracket: tuple[float, str, float] | None = None   # (value past the event, kind, width)
         aim: float | None = None                      # the fold predicted inside the bracket
         while True:
-            if abs(target.value - v) <= 1e-14 * max(1.0, abs(target.value)):
+            if by_depth and state.fields.mean_pressure >= target.value:
+                return self.at_load(state, below, target)
+            if np.isfinite(end) and abs(end - v) <= 1e-14 * max(1.0, abs(end)):
                 return state
             if bracket is not None and abs(bracket[0] - v) <= bracket[2] * (1 + 1e-9):
+                if by_depth and bracket[1] in ("fold", "target"):
+                    # the target load located; or a step that failed near it (an adhesionless
+                    # contact has no folds: that failure is the solver's): the target load is
+                    # solved from the states around it
+                    return self.at_load(state, above if bracket[1] == "target" else below,
+                                        target)
                 landing = self.act(bracket[1], state, Control(kind, bracket[0]), target)
-                if landing.outcome is not Outcome.CONVERGED:
+                if landing.outcome is not Outcome.CONVERGED or self.reached(landing, target):
                     return landing
-                state, v = landing, bracket[0]
+                below, state, v = None, landing, bracket[0]
                 step, bracket, aim = opt.path_step, None, None
                 continue
-            v_next = self.next_value(v, step * scale, target.value, bracket, aim)
+            v_next = self.next_value(v, step * scale, end, bracket, aim)
             tangent = path.tangent(state, load)
             start = path.predicted(state, v_next - v, load=load, tangent=tangent)
-            last = v_next == target.value
+            last = v_next == end
             trial = eq.solve(start, Control(kind, v_next), use_fallback=False,
                              budget=path.budget, refine=last, polish=last,
                              probation=path.probation, pace=path.pace,
                              reduction=0.0 if last else STEP_REDUCTION)
             event = self.event(state, start, trial)
+            if (event is None and by_depth and trial.fields.mean_pressure > target.value
+                    and abs(v_next - v) > opt.smallest):
+                # the step passed the target load: locate it like an event, so that the load is
+                # solved from a state close to it
+                event, above = "target", trial
             if event is None:
                 step = path.next_step(abs(v_next - v) / scale, start, state.edges, trial.edges)
-                state, v = trial, v_next
+                below, state, v = state, trial, v_next
                 continue
-            bracket, aim = (v_next, event, opt.smallest * scale), None
+            bracket, aim = (v_next, event, opt.smallest), None
             if event == "fold" and eq.adhesive:
                 aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
 
@@ -192,6 +247,26 @@ class Approach:
             k = float(px @ t) + pd
         k = abs(float(k))
         return k if np.isfinite(k) and k > 1e-3 * previous else previous
+
+    def reached(self, state: State, target: Control) -> bool:
+        """Whether a converged state is at the target (a closure solved there)."""
+        value = self.value(state, target.kind)
+        return abs(value - target.value) <= 1e-9 * max(1.0, abs(target.value))
+
+    def at_load(self, state: State, below: State | None, target: Control) -> State:
+        """The target load, passed by the last penetration step (from ``below`` to ``state``):
+        solved from the closer of the two."""
+        eq = self.eq
+        starts = [state] if below is None else sorted(
+            (state, below), key=lambda s: abs(float(s.fields.mean_pressure) - target.value))
+        out = State(outcome=Outcome.NOT_CONVERGED, edges=state.edges, message="")
+        for start in starts:
+            change = target.value - float(start.fields.mean_pressure)
+            for guess in (self.path.predicted(start, change, load=True), start.edges):
+                out = eq.solve(guess, target)
+                if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT):
+                    return out
+        return out
 
     def next_value(self, v: float, step: float, end: float,
                    bracket: tuple[float, str, float] | None, aim: float | None) -> float:

@@ -46,6 +46,14 @@ class Discretization:
         thesis profile's points land on another equilibrium at a ten times smaller step
         (``benchmarks/results`` §11); a study that needs the quasi-static branch point by point
         should check its points at a smaller step.
+    approach : {"stepped", "events"}
+        How the approach from first touch is followed. ``"stepped"`` (default): steps of the
+        penetration whose failures are halved, folds crossed and jumps searched for by the
+        path's rules. ``"events"``: a continuation in the controlled quantity with located events
+        (births, merges, detachments, folds, closure) and one jump rule, the edges' overdamped
+        motion (:mod:`~viscocontact.methods.bem.approach`); its answer does not depend on the
+        path step (``benchmarks/approach_paths.py --approach events``), at two to four times the
+        residual evaluations of ``"stepped"``.
     interior_resolution : float or None
         Elements per shortest wavelength of the profile (:attr:`Profile.shortest_wavelength`)
         inside a contact. The clustered mesh of eq. 4.22 puts its largest elements mid-contact
@@ -70,6 +78,8 @@ class Discretization:
     grading: float = attrs.field(default=1.15, validator=in_range(1.05, 2.0))
     check_points: int = attrs.field(default=2048, validator=int_range(64, 1 << 20))
     path_step: float = attrs.field(default=0.05, validator=in_range(1e-4, 1.0))
+    approach: str = attrs.field(default="stepped",
+                                validator=attrs.validators.in_(("stepped", "events")))
     interior_resolution: float | None = attrs.field(
         default=8.0,
         validator=attrs.validators.optional(in_range(1.0, 64.0)))  # type: ignore[arg-type]

@@ -78,7 +78,8 @@ class Solve:
             tolerances=attrs.evolve(tol, residual=tol.residual * residual_scale(prep.kernel)),
             max_restarts=problem.max_restarts, checks=self.checks, log=self.log)
         self.path = Path(self.equilibrium, self.closed, disc.path_step)
-        self.approach = Approach(self.path, ApproachOptions(path_step=disc.path_step))
+        self.events = (Approach(self.path, ApproachOptions(path_step=disc.path_step))
+                       if disc.approach == "events" else None)
 
     def run(self, initial, want_fields: bool) -> ContactResult:
         t0 = time.perf_counter()
@@ -97,21 +98,27 @@ class Solve:
             out = Relaxation(self.equilibrium, self.closed, initial.tolerance).run(
                 initial.edges, target)
         elif initial is not None and getattr(initial, "full_contact", False):
-            out = self.approach.from_full_contact(target)
+            out = (self.events.from_full_contact(target) if self.events is not None
+                   else self.path.from_full_contact(target))
         elif initial is not None:
             edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()
             out = self.equilibrium.solve(edges, target)
             if out.outcome is Outcome.NOT_CONVERGED and adhesive and not target.is_load:
                 # retracted past the fold of its branch, the contact pulls off
-                out = Relaxation(self.equilibrium, self.closed).run(edges, target)
+                out = (Relaxation(self.equilibrium, self.closed).run(edges, target)
+                       if self.events is not None else self.path.release(edges, target) or out)
             if out.outcome is Outcome.NOT_CONVERGED and not adhesive:
                 # an adhesionless equilibrium does not depend on the path: start afresh
                 self.log.event(f"no equilibrium from the given contact set ({out.message}); "
                                "solved from first touch")
                 self.policy.forget()       # the same answer as a solve from first touch
-                out = self.approach.run(target)
+                out = self.path.approach(target)
+        elif self.events is not None:
+            out = self.events.run(target)
         else:
-            out = self.approach.run(target)
+            out = self.path.approach(target)
+            if target.is_load and out.outcome is Outcome.CONVERGED and adhesive:
+                out = self.path.stable_under_load(out, target)
         return self.assemble(out, target, want_fields, time.perf_counter() - t0)
 
     def assemble(self, out: State, target: Control, want_fields: bool,

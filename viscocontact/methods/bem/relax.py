@@ -140,30 +140,34 @@ class Relaxation:
             if error > self.tolerance:
                 h, J = h * max(0.2, 0.9 * np.sqrt(self.tolerance / error)), None
                 continue
+            landed, changed, reason, full = repair(middle + second, MIN_WIDTH, MIN_GAP)
+            if full:
+                if control.is_load and not self.closed.supports(control.value):
+                    return self._failed(landed, "closed the contact, which does not carry "
+                                                "this load")
+                self.eq.log.event("the edges' motion closed the contact")
+                return State.full_contact()
+            if not landed.size:
+                self.eq.log.event("the edges' motion detached every contact")
+                return self.eq.solve(landed, control, use_fallback=False, **self._finish)
+            after = self.eq.system(control, landed) if changed else system
+            if self._residual(after, landed) is None:
+                # no field at the step's end (a Maugis-Dugdale zone's equations): a shorter step
+                h, J = 0.25 * h, None
+                continue
             h *= min(4.0, 0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
-            moved, age = moved + 1, age + 1
-            x, changed, reason, full = repair(middle + second, MIN_WIDTH, MIN_GAP)
+            moved, age, x = moved + 1, age + 1, landed
             for kind, word in (("merge", "merge"), ("detachment", "detach")):
                 if changed and word in reason:
                     self.eq.log.records.append({"kind": kind, "control": control.value})
             track.append((float(np.sum(x[1::2] - x[0::2])), float(np.mean(x)), len(x)))
             if changed:
                 track = track[-1:]
+                system, J = after, None
+                systems.append(system)
             if self._travels(track):
                 return self._failed(x, "carries the contacts round the period: no steady "
                                        "state at this control")
-            if full:
-                if control.is_load and not self.closed.supports(control.value):
-                    return self._failed(x, "closed the contact, which does not carry this "
-                                           "load")
-                self.eq.log.event("the edges' motion closed the contact")
-                return State.full_contact()
-            if not x.size:
-                self.eq.log.event("the edges' motion detached every contact")
-                return self.eq.solve(x, control, use_fallback=False, **self._finish)
-            if changed:
-                system, J = self.eq.system(control, x), None
-                systems.append(system)
         else:
             return self._failed(x, f"did not stop within {self.max_steps} steps")
         self.eq.log.event(f"the edges moved in {moved} steps of their overdamped motion")
