@@ -115,7 +115,7 @@ class Sweep(Study):
     ... ''')
     >>> sweep = Sweep(scene=scene, zetas=log_zetas(1e-3, 1e2, 6), loads=[0.05, 0.1])
     >>> sweep.variants, len(sweep.chains())
-    (('adhesive', 'adhesionless'), 4)
+    (('adhesive', 'adhesionless'), 14)
     """
 
     kind: ClassVar[str] = "sweep"
