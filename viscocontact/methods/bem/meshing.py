@@ -51,9 +51,10 @@ class Discretization:
         penetration whose failures are halved, folds crossed and jumps searched for by the
         path's rules. ``"events"``: a continuation in the controlled quantity with located events
         (births, merges, detachments, folds, closure) and one jump rule, the edges' overdamped
-        motion (:mod:`~viscocontact.methods.bem.approach`); its answer does not depend on the
-        path step (``benchmarks/approach_paths.py --approach events``), at two to four times the
-        residual evaluations of ``"stepped"``.
+        motion (:mod:`~viscocontact.methods.bem.approach`), which locates every event to 1/256
+        of the path step; at about three times the residual evaluations of ``"stepped"``, and
+        not yet converged in the step on every rough point
+        (``benchmarks/approach_paths.py --approach events``: 13 of 15).
     interior_resolution : float or None
         Elements per shortest wavelength of the profile (:attr:`Profile.shortest_wavelength`)
         inside a contact. The clustered mesh of eq. 4.22 puts its largest elements mid-contact
