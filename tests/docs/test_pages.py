@@ -82,7 +82,8 @@ def test_the_tutorial_walks_the_newcomers_path():
     positions = [text.find(step) for step in steps]
     assert -1 not in positions, [s for s, p in zip(steps, positions) if p == -1]
     assert positions == sorted(positions)
-    assert "time.perf_counter() - _started" in text.split("## How long this page takes")[1]
+    closing = text.split("## How long this page takes")[1]
+    assert "perf_counter" in closing and "_started" in closing     # the page times its cells
 
 
 def test_the_api_page_lists_every_public_name():

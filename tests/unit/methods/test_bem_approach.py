@@ -84,6 +84,8 @@ class _Parabola:
     first contact runs into the fold at ``v*``), every other edge ``rᵢ = xᵢ - xᵢ⁰ - sᵢv``
     (linear). The stand-in of both the state's edge system and the equilibrium."""
 
+    log = None
+
     def __init__(self, a, x_star, fold, x_lin, s_lin):
         self.a, self.x_star, self.fold = a, x_star, fold
         self.x_lin, self.s_lin = np.asarray(x_lin, float), np.asarray(s_lin, float)
@@ -113,8 +115,11 @@ def _fold_ahead(v0, step, scale=1.0):
     d = branch.derivatives(x0)
     tangent = -np.linalg.solve(d.jacobian, d.control)
     state = State(outcome=Outcome.CONVERGED, edges=x0, system=branch)
+    from viscocontact.methods.bem.path import Path
+
     approach = Approach.__new__(Approach)
     approach.eq = branch
+    approach.path = Path(branch, closed=None, path_step=0.05)
     return approach.fold_ahead(state, tangent, x0 + scale * tangent * step,
                                Control.penetration_of(v0 + step), v0)
 

@@ -311,24 +311,11 @@ class Approach:
         ``x'/(2x'')`` is its distance to the fold; the earliest fold within the step is taken.
         None when the start was scaled down (:meth:`Path.predicted`), no edge folds within the
         step, or the derivatives are missing."""
-        x0 = np.asarray(state.edges, dtype=float)
         change = control.value - v
-        if tangent is None or state.system is None or x0.size == 0 or change == 0:
+        ahead = self.path.fold_within(state, tangent, start, control, change)
+        if ahead is None or not ahead[0] < abs(change):
             return None
-        if not np.array_equal(np.asarray(start, dtype=float), x0 + tangent * change):
-            return None
-        d = state.system.derivatives(x0)
-        r = self.eq.residual_at(start, control)
-        if d is None or r is None or not np.all(np.isfinite(r)):
-            return None
-        try:
-            curvature = -np.linalg.solve(d.jacobian, 2.0 * np.asarray(r) / change**2)
-        except np.linalg.LinAlgError:
-            return None
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ahead = np.where(tangent * curvature > 0, tangent / (2.0 * curvature), np.inf)
-        distance = float(np.min(ahead))
-        return v + float(np.sign(change)) * distance if distance < abs(change) else None
+        return v + float(np.sign(change)) * ahead[0]
 
     def act(self, event: str, state: State, past: Control, target: Control) -> State:
         """The event's action, located between ``state`` and the control value ``past``:

@@ -471,14 +471,29 @@ class Path:
         birth or a merge). None when the start was scaled down (:meth:`predicted`), no edge
         folds within the step, or the derivatives are missing.
         """
+        if change <= 0:
+            return None
+        ahead = self.fold_within(state, tangent, start,
+                                 Control.penetration_of(penetration + change), change)
+        if ahead is None or not ahead[0] < change:
+            return None
+        return penetration + ahead[0], ahead[1]
+
+    def fold_within(self, state: State, tangent, start, control: Control,
+                    change: float) -> tuple[float, int] | None:
+        """``(distance, edge)``: how far along the branch through ``state`` its earliest edge
+        folds, from the residual at the start ``x + change·t`` of a step to ``control`` along the
+        tangent ``t`` (``x'' = -J⁻¹·2r/change²``, an edge's ``x'/(2x'')``; see
+        :meth:`fold_from_start`), or None when the start is not the tangent's or the derivatives
+        are missing."""
         x0 = np.asarray(state.edges, dtype=float)
         system = state.system
-        if tangent is None or system is None or x0.size == 0 or change <= 0:
+        if tangent is None or system is None or x0.size == 0 or change == 0:
             return None
         if not np.array_equal(np.asarray(start, dtype=float), x0 + tangent * change):
             return None
         d = system.derivatives(x0)
-        r = self.eq.residual_at(start, Control.penetration_of(penetration + change))
+        r = self.eq.residual_at(start, control)
         if d is None or r is None or not np.all(np.isfinite(r)):
             return None
         try:
@@ -488,9 +503,7 @@ class Path:
         with np.errstate(divide="ignore", invalid="ignore"):
             ahead = np.where(tangent * curvature > 0, tangent / (2.0 * curvature), np.inf)
         lead = int(np.argmin(ahead))
-        if not ahead[lead] < change:
-            return None
-        return penetration + float(ahead[lead]), lead
+        return float(ahead[lead]), lead
 
     def cross(self, state: State, tangent, control: Control, polish: bool = False,
               lead: int | None = None) -> State | None:
