@@ -104,3 +104,23 @@ def array_eq():
     import attrs
 
     return attrs.cmp_using(eq=lambda a, b: a.shape == b.shape and bool(np.array_equal(a, b)))
+
+
+def readonly_floats(value) -> np.ndarray:
+    """A read-only float copy of ``value`` (an attrs converter of array fields)."""
+    arr = np.array(value, dtype=float, copy=True)
+    arr.setflags(write=False)
+    return arr
+
+
+def readonly_ints(value, field: str, allowed: str = "integers") -> np.ndarray:
+    """A read-only int64 copy of ``value``; whole floats are taken, anything else is a
+    ValidationError naming ``field`` and ``allowed``."""
+    arr = np.array(value, copy=True)
+    if arr.dtype.kind == "f" and np.all(np.isfinite(arr)) and np.all(arr == np.round(arr)):
+        arr = arr.astype(np.int64)
+    if arr.dtype.kind not in "iu":
+        raise ValidationError(field, value, allowed)
+    arr = arr.astype(np.int64)
+    arr.setflags(write=False)
+    return arr

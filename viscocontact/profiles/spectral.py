@@ -28,7 +28,7 @@ import math
 import attrs
 import numpy as np
 
-from .._validation import array_eq
+from .._validation import array_eq, readonly_floats, readonly_ints
 from ..errors import ValidationError
 from .base import TWO_PI, Profile, ProfileStatistics, sampled_maxima
 
@@ -48,20 +48,7 @@ def as_float(value):
 
 
 def _int_array(value):
-    arr = np.array(value, copy=True)
-    if arr.dtype.kind == "f" and np.all(np.isfinite(arr)) and np.all(arr == np.round(arr)):
-        arr = arr.astype(np.int64)
-    if arr.dtype.kind not in "iu":
-        raise ValidationError("Modes.wavenumbers", value, "integers >= 1")
-    arr = arr.astype(np.int64)
-    arr.setflags(write=False)
-    return arr
-
-
-def _float_array(value):
-    arr = np.array(value, dtype=float, copy=True)
-    arr.setflags(write=False)
-    return arr
+    return readonly_ints(value, "Modes.wavenumbers", "integers >= 1")
 
 
 def _check_modes(inst, attribute, value):
@@ -96,9 +83,9 @@ class Modes:
 
     wavenumbers: np.ndarray = attrs.field(converter=_int_array, validator=_check_modes,
                                           eq=array_eq(), hash=False)
-    amplitudes: np.ndarray = attrs.field(converter=_float_array, validator=_check_modes,
+    amplitudes: np.ndarray = attrs.field(converter=readonly_floats, validator=_check_modes,
                                          eq=array_eq(), hash=False)
-    phases: np.ndarray = attrs.field(converter=_float_array, validator=_check_modes, eq=array_eq(), hash=False)
+    phases: np.ndarray = attrs.field(converter=readonly_floats, validator=_check_modes, eq=array_eq(), hash=False)
 
     @property
     def coefficients(self) -> np.ndarray:

@@ -29,7 +29,7 @@ import attrs
 import numpy as np
 import scipy.fft
 
-from ..._validation import array_eq
+from ..._validation import array_eq, readonly_floats, readonly_ints
 from ...errors import ValidationError
 from .analysis import SurfaceStatistics
 from .base import Surface
@@ -38,20 +38,7 @@ __all__ = ["SpectralSurface", "SurfaceModes", "check_grid"]
 
 
 def _int_array(value):
-    arr = np.array(value, copy=True)
-    if arr.dtype.kind == "f" and np.all(np.isfinite(arr)) and np.all(arr == np.round(arr)):
-        arr = arr.astype(np.int64)
-    if arr.dtype.kind not in "iu":
-        raise ValidationError("SurfaceModes.wavenumbers", value, "integers")
-    arr = arr.astype(np.int64)
-    arr.setflags(write=False)
-    return arr
-
-
-def _float_array(value):
-    arr = np.array(value, dtype=float, copy=True)
-    arr.setflags(write=False)
-    return arr
+    return readonly_ints(value, "SurfaceModes.wavenumbers", "integers")
 
 
 def _check_shape(inst, attribute, value):
@@ -100,9 +87,9 @@ class SurfaceModes:
                                  hash=False)
     ky: np.ndarray = attrs.field(converter=_int_array, validator=_check_half_plane,
                                  eq=array_eq(), hash=False)
-    amplitudes: np.ndarray = attrs.field(converter=_float_array, validator=_check_shape,
+    amplitudes: np.ndarray = attrs.field(converter=readonly_floats, validator=_check_shape,
                                          eq=array_eq(), hash=False)
-    phases: np.ndarray = attrs.field(converter=_float_array, validator=_check_shape,
+    phases: np.ndarray = attrs.field(converter=readonly_floats, validator=_check_shape,
                                      eq=array_eq(), hash=False)
 
     def wavevectors(self, aspect: float) -> tuple[np.ndarray, np.ndarray]:
