@@ -43,9 +43,14 @@ def test_a_rough_approach_meets_births_folds_jumps_and_merges_and_is_converged_i
     assert {"birth", "fold", "jump", "merge"} <= kinds(coarse)
     assert coarse.n_contacts == fine.n_contacts
     assert coarse.area == pytest.approx(fine.area, rel=1e-8)
-    jumps = [e for e in coarse.extras["path_events"] if e["kind"] == "jump"]
-    folds = [e for e in coarse.extras["path_events"] if e["kind"] == "fold"]
-    assert len(jumps) == len(folds) and all("penetration" in e for e in jumps)
+    # every jump leaves the branch at a fold or where a contact is born (an adhesive spot
+    # born at a point jumps open), at a penetration
+    events = coarse.extras["path_events"]
+    jumps = [j for j, e in enumerate(events) if e["kind"] == "jump"]
+    assert jumps and all("penetration" in events[j] for j in jumps)
+    for j in jumps:
+        before = [e["kind"] for e in events[:j]]
+        assert {"fold", "birth"} & set(before[-3:]), before
 
 
 @pytest.mark.slow

@@ -34,6 +34,7 @@ from .sets import Control, first_touch
 from .state import Outcome, State
 
 
+
 @attrs.frozen(kw_only=True)
 class ApproachOptions:
     """The settings of the approach's continuation (one frozen object).
@@ -179,7 +180,7 @@ class Approach:
         # |d(control)/dΔ̃| of the first contact's branch, at least 1: the unit of the steps,
         # fixed for the solve (the events are located to ApproachOptions.smallest of the control)
         scale = max(1.0, self.scale(state, load, 1.0))
-        bracket: tuple[float, str, float] | None = None   # (value past the event, kind, width)
+        bracket: tuple | None = None   # (value past the event, kind, width, gap there)
         aim: float | None = None                      # the fold predicted inside the bracket
         while True:
             if by_depth and state.fields.mean_pressure >= target.value:
@@ -203,10 +204,12 @@ class Approach:
             tangent = path.tangent(state, load)
             start = path.predicted(state, v_next - v, load=load, tangent=tangent)
             last = v_next == end
+            logged = len(eq.log.records)
             trial = eq.solve(start, Control(kind, v_next), use_fallback=False,
                              budget=path.budget, refine=last, polish=last,
                              probation=path.probation, pace=path.pace,
-                             reduction=0.0 if last else STEP_REDUCTION)
+                             reduction=0.0 if last else STEP_REDUCTION,
+                             changes=not eq.adhesive)    # (an adhesionless root is unique)
             event = self.event(state, start, trial)
             if (event is None and by_depth and trial.fields.mean_pressure > target.value
                     and abs(v_next - v) > opt.smallest):
@@ -216,10 +219,15 @@ class Approach:
             if event is None:
                 step = path.next_step(abs(v_next - v) / scale, start, state.edges, trial.edges)
                 below, state, v = state, trial, v_next
+                if bracket is not None and bracket[1] == "birth":
+                    aim = self.birth_ahead(state, v, bracket)
                 continue
-            bracket, aim = (v_next, event, opt.smallest), None
+            del eq.log.records[logged:]     # (a step past an event is not on the path)
+            bracket, aim = (v_next, event, opt.smallest, trial.gap), None
             if event == "fold" and eq.adhesive:
                 aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
+            elif event == "birth":
+                aim = self.birth_ahead(state, v, bracket)
 
     @staticmethod
     def scale(state: State, load: bool, previous: float) -> float:
@@ -268,23 +276,47 @@ class Approach:
                     return out
         return out
 
-    def next_value(self, v: float, step: float, end: float,
-                   bracket: tuple[float, str, float] | None, aim: float | None) -> float:
-        """The next step's value: a step towards ``end``, or inside the bracket of an event,
-        just short of its predicted fold or at its middle."""
+    def next_value(self, v: float, step: float, end: float, bracket: tuple | None,
+                   aim: float | None) -> float:
+        """The next step's value: a step towards ``end``; inside the bracket of an event, just
+        short of its predicted place ``aim``, then just past it (so that a good prediction
+        locates the event in two steps), else at the bracket's middle."""
         if bracket is None:
             return v + float(np.clip(end - v, -step, step))
-        past, half = bracket[0], 0.5 * bracket[2]
+        past, width = bracket[0], bracket[2]
         if aim is not None:
-            short = aim - np.sign(past - v) * half
-            if min(v, past) + half < short < max(v, past) - half:
-                return float(short)
+            sign = np.sign(past - v)
+            for value in (aim - 0.5 * sign * width, aim + 0.5 * sign * width):
+                if min(sign * (value - v), sign * (past - value)) > 0.25 * width:
+                    return float(value)
         return 0.5 * (v + past)
 
+    def birth_ahead(self, state: State, v: float, bracket: tuple) -> float | None:
+        """Where a contact is born inside ``bracket``: the secant root of the smallest gap
+        outside the contacts, from ``state`` (at ``v``, no penetration) to the bracket's end
+        (where the held contact set penetrates); None without both gaps."""
+        past, gap_past = bracket[0], bracket[3]
+        if state.fields is None or not gap_past < 0.0:
+            return None
+        _, gap = self.eq.checks.gap_outside(state.fields)
+        here = float(np.min(gap)) if gap.size else np.nan
+        if not here > 0.0:
+            return None
+        return v + (past - v) * here / (here - gap_past)
+
     def event(self, state: State, start, trial: State) -> str | None:
-        """What ends the branch within a step to ``trial`` (None: the step is on the branch)."""
+        """What ends the branch within a step to ``trial`` (None: the step is on the branch).
+
+        Besides a fold and closure, an adhesive contact's set changes along the branch (a
+        birth, a merge, a detachment, a split: the trial's :attr:`State.change`, which the
+        trial's solve did not make). The state it lands in depends on where the set changes (a
+        spot born later is born into a deformed neighbourhood): like a fold, the change is
+        located to the resolution and made there, so the state reached does not depend on the
+        step."""
         if trial.outcome is Outcome.FULL_CONTACT:
             return "closure"
+        if trial.change:
+            return trial.change
         if trial.outcome is not Outcome.CONVERGED:
             return "fold"
         if (self.eq.adhesive and np.shape(trial.edges) == np.shape(state.edges)
@@ -319,15 +351,19 @@ class Approach:
 
     def act(self, event: str, state: State, past: Control, target: Control) -> State:
         """The event's action, located between ``state`` and the control value ``past``:
-        closure, or the jump (the edges' motion from ``state`` at ``past``)."""
+        closure, or the edges' motion from ``state`` at ``past`` (the jump; after a birth, the
+        new contact's growth), recorded as a jump when it leaves the branch."""
         log = self.eq.log
         if event == "closure":
             return self.closed(State.full_contact(), state, target)
-        _record(log, "fold", **{past.kind: self.value(state, past.kind)})
+        if event == "fold":
+            _record(log, "fold", **{past.kind: self.value(state, past.kind)})
         landing = self.relax.run(state.edges, past, final=False)
         if landing.outcome is Outcome.FULL_CONTACT:
             return self.closed(landing, state, target)
-        if landing.converged:
+        if landing.converged and (np.shape(landing.edges) != np.shape(state.edges)
+                                  or self._moved(state.edges, landing.edges)
+                                  > self.options.jumped):
             _record(log, "jump", area=float(np.sum(landing.fields.mesh.width)),
                     **{past.kind: past.value})
         return landing

@@ -107,7 +107,8 @@ class Equilibrium:
     def solve(self, edges, control: Control, use_fallback: bool = True,
               budget: int | None = None, refine: bool = True, polish: bool = True,
               fallback_budget: int | None = None, probation: int = 0,
-              pace: tuple[float, ...] = (), reduction: float = 0.0) -> State:
+              pace: tuple[float, ...] = (), reduction: float = 0.0,
+              changes: bool = True) -> State:
         """Equilibrium at ``control`` from ``edges`` (contact-set changes included).
 
         ``use_fallback = False`` skips the fallback march when the primary solver stops, and
@@ -136,6 +137,12 @@ class Equilibrium:
         (the zones are fixed within a solve, from the edges it starts at, so the discretisation
         would otherwise depend on the start by about 1e-7 in Ã); then the same root gives the same
         answer whatever the path and the solver. The approach's intermediate steps skip it.
+
+        ``changes = False``: the contact set is held. Where the solve would change it (a birth,
+        a merge, a detachment, a split), it stops and returns the state with
+        :attr:`State.change` set (for a birth, the converged state of the held set and its
+        smallest gap :attr:`State.gap`): the approach locates the change along its path and
+        makes it there.
         """
         log = self.log
         tolerances = self.tolerances
@@ -186,6 +193,10 @@ class Equilibrium:
                     res = self.fallback.solve(system, start, fallback_tolerances)
             except TopologyChange as change:
                 log.evaluations += system.evaluations
+                if not changes and not change.full_contact:
+                    return State(outcome=Outcome.NOT_CONVERGED, edges=edges,
+                                 message=change.reason, change=(
+                                     "merge" if "merge" in change.reason else "detachment"))
                 log.event(change.reason)
                 for kind in ("merge", "detach"):
                     if kind in change.reason:
@@ -221,14 +232,8 @@ class Equilibrium:
                              residual=size, message=message)
 
             xs, gap = self.checks.gap_outside(fields)          # once, for both checks
-            # births first: where the profile penetrates, a contact is born whatever the model
-            # makes of the gap elsewhere (Maugis-Dugdale: a gap below the range outside its zones,
-            # which a penetrating asperity also has around it)
-            regions = self.checks.births(fields, (xs, gap))
-            snapped = False
-            if not regions:     # (a finite-range law: a peak within the range jumps in)
-                regions = self.adhesion.snap_in(xs, gap, fields)
-                snapped = bool(regions)
+            # births first (:meth:`born`)
+            regions, snapped = self.born(fields, (xs, gap))
             violation = None if regions else self.adhesion.gap_violation(xs, gap, fields)
             if violation is not None:
                 return not_converged(violation)
@@ -241,6 +246,10 @@ class Equilibrium:
                     f"contact set cycles: contacts born where the gap is {where} on the check "
                     f"grid ({len(regions)} region(s)) detach again; a finer check grid "
                     "(Discretization.check_points) or mesh may settle it")
+            if regions and not changes:
+                return State(outcome=Outcome.CONVERGED, edges=x, fields=fields, ctx=ctx,
+                             residual=size, message="a contact is born", system=system,
+                             change="birth", gap=float(np.min(gap)))
             if regions:
                 converged_before_births.append(x.copy())
                 new = [v for (a, b, _) in regions for v in (a, b)]
@@ -302,6 +311,9 @@ class Equilibrium:
                 splits.clear()
                 edges = x
                 continue
+            if split is not None and not changes:
+                return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
+                             residual=size, message="a contact splits", change="split")
             if split is not None:
                 splits.append(split)
                 if any(len(split) == len(y) and np.allclose(split, y, rtol=0, atol=1e-3)
@@ -334,6 +346,19 @@ class Equilibrium:
                          residual=size, message="converged", system=system)
         return State(outcome=Outcome.NOT_CONVERGED, edges=edges, residual=np.inf,
                      message=f"contact set still changing after {self.max_restarts} restarts")
+
+    def born(self, fields, outside=None) -> tuple[list, bool]:
+        """The regions ``(a, b, depth)`` where contacts are born from the state of ``fields``,
+        and whether they snapped in: where the profile penetrates, whatever the model makes of
+        the gap elsewhere (Maugis-Dugdale: a gap below the range outside its zones, which a
+        penetrating asperity also has around it); else, for a finite-range law, where a peak
+        comes within the range. ``outside``: :meth:`Checks.gap_outside` when at hand."""
+        xs, gap = self.checks.gap_outside(fields) if outside is None else outside
+        regions = self.checks.births(fields, (xs, gap))
+        if regions:
+            return regions, False
+        regions = self.adhesion.snap_in(xs, gap, fields)
+        return regions, bool(regions)
 
     def grow(self, edges, control: Control, born) -> np.ndarray | None:
         """``edges`` with the contacts just born (``born``: their ``(a, b)``) widened while their

@@ -11,13 +11,17 @@ Griffith balance), at fixed speed ζ and fixed control, until the edges stop,
 so that an edge whose residual is negative (it would advance) advances, and one with a
 positive residual recedes. The flow is integrated by linearly implicit Euler steps,
 ``(I/h + O J) δ = -O r`` (``J`` refreshed after a rejected step and every
-:data:`JACOBIAN_AGE` steps), with the step ``h`` chosen by step doubling so that no edge
-moves more than ``tolerance`` of its contact's half-width (or of the mean half-width, when that
-is larger) away from the two half-steps; contacts that meet merge, contacts that vanish detach,
+:data:`JACOBIAN_AGE` steps), with the step ``h`` chosen so that each step's local error,
+``h²/2·Ẍ`` estimated as ``h/2`` times the change of the edges' speed over the step (one
+residual a step), is within ``tolerance`` of its contact's half-width (or of the mean
+half-width, when that is larger); contacts that meet merge, contacts that vanish detach,
 contacts that close over the period close. As the edges slow down the steps grow and become
 Newton's; once every mode of the motion decays and Newton's step to the root is within the
 tolerance (or ``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance), the
-equilibrium solve (births, refinements) finishes from there.
+equilibrium solve finishes from there with the contact set held. Where the profile penetrates
+at its root, contacts are born there, at zero size, and the motion goes on with them (a born
+contact grows as every edge moves), so that merges, detachments and births all happen on the
+way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
@@ -84,8 +88,14 @@ class Relaxation:
         systems: list = []
         self._finish = ({} if final else
                         {"polish": False, "refine": False, "reduction": STEP_REDUCTION})
+        x = np.asarray(edges, dtype=float).copy()
         try:
-            return self._run(np.asarray(edges, dtype=float).copy(), control, systems)
+            for _ in range(self.max_steps):
+                out = self._run(x, control, systems)
+                if isinstance(out, State):
+                    return out
+                x = out             # contacts were born: the motion goes on with them
+            return self._failed(x, f"met more than {self.max_steps} births")
         finally:
             self.eq.log.evaluations += sum(s.evaluations for s in systems)
 
@@ -93,7 +103,25 @@ class Relaxation:
         return State(outcome=Outcome.NOT_CONVERGED, edges=x, message=f"the edges' overdamped "
                      f"motion {why}")
 
-    def _run(self, x: np.ndarray, control: Control, systems: list) -> State:
+    def _settle(self, x: np.ndarray, control: Control) -> State | np.ndarray | None:
+        """The equilibrium solve from ``x`` with its contact set held: the state; or, where
+        the profile penetrates at that state's root, the edges with the contacts born there
+        added (they grow by the motion, like every edge); or None when the solve met a merge
+        or a split (the motion makes those)."""
+        eq = self.eq
+        out = eq.solve(x, control, use_fallback=False, changes=False, **self._finish)
+        if out.change == "birth":
+            regions, snapped = eq.born(out.fields)
+            new = [v for (a, b, _) in regions for v in (a, b)]
+            edges, _, _, full = repair(np.concatenate([out.edges, new]), MIN_WIDTH, MIN_GAP)
+            eq.log.event(f"{len(regions)} contact(s) born" + (
+                " where the gap fell below the cohesive range" if snapped else ""))
+            eq.log.records.append({"kind": "birth", "control": control.value,
+                                   "contacts": float(len(regions))})
+            return State.full_contact() if full else edges
+        return None if out.change else out
+
+    def _run(self, x: np.ndarray, control: Control, systems: list) -> State | np.ndarray:
         system = self.eq.system(control, x)
         systems.append(system)
         settled = SETTLED * self.eq.tolerances.residual
@@ -104,8 +132,8 @@ class Relaxation:
         J = None                # the Jacobian of the steps: kept while they are accepted
         age = 0
         moved = 0
+        r = self._residual(system, x)
         for _ in range(self.max_steps):
-            r = self._residual(system, x)
             if r is None:
                 return self._failed(x, "met a contact set without a valid field")
             if np.max(np.abs(r)) <= settled:
@@ -117,8 +145,9 @@ class Relaxation:
             if shortcut and self._near_stable_root(r, J, x):
                 # Newton's step lands on the root the motion is heading for, unless the state
                 # sits at a fold past which the root is gone: then the motion goes on
-                out = self.eq.solve(x, control, use_fallback=False, **self._finish)
-                if out.outcome is not Outcome.NOT_CONVERGED:
+                out = self._settle(x, control)
+                if out is not None and not (isinstance(out, State)
+                                            and out.outcome is Outcome.NOT_CONVERGED):
                     self.eq.log.event(f"the edges moved in {moved} steps of their overdamped "
                                       "motion")
                     return out
@@ -128,19 +157,11 @@ class Relaxation:
             # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign
             # past 2/h): the step resolves the growth of every unstable mode of the motion
             h = min(h, UNSTABLE_STEP / self._growth(J))
-            whole = self._step(r, J, h)
-            first = self._step(r, J, 0.5 * h)
-            middle = None if first is None else x + first
-            r_mid = None if middle is None else self._residual(system, middle)
-            second = None if r_mid is None else self._step(r_mid, J, 0.5 * h)
-            if whole is None or first is None or middle is None or second is None:
+            move = self._step(r, J, h)
+            if move is None:
                 h, J = 0.25 * h, None
                 continue
-            error = float(np.max(np.abs(whole - first - second) / _scale(x)))
-            if error > self.tolerance:
-                h, J = h * max(0.2, 0.9 * np.sqrt(self.tolerance / error)), None
-                continue
-            landed, changed, reason, full = repair(middle + second, MIN_WIDTH, MIN_GAP)
+            landed, changed, reason, full = repair(x + move, MIN_WIDTH, MIN_GAP)
             if full:
                 if control.is_load and not self.closed.supports(control.value):
                     return self._failed(landed, "closed the contact, which does not carry "
@@ -151,12 +172,22 @@ class Relaxation:
                 self.eq.log.event("the edges' motion detached every contact")
                 return self.eq.solve(landed, control, use_fallback=False, **self._finish)
             after = self.eq.system(control, landed) if changed else system
-            if self._residual(after, landed) is None:
+            r_new = self._residual(after, landed)
+            if r_new is None:
                 # no field at the step's end (a Maugis-Dugdale zone's equations): a shorter step
                 h, J = 0.25 * h, None
                 continue
+            # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
+            # the speed -O r over the step (one residual a step: the one the next step needs);
+            # a step that changes the contact set is taken as it is (the set's change is the
+            # motion's event)
+            error = (0.0 if changed else
+                     float(np.max(0.5 * h * np.abs(r_new - r) / _scale(x))))
+            if error > self.tolerance:
+                h, J = h * max(0.2, 0.9 * np.sqrt(self.tolerance / error)), None
+                continue
             h *= min(4.0, 0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
-            moved, age, x = moved + 1, age + 1, landed
+            moved, age, x, r = moved + 1, age + 1, landed, r_new
             for kind, word in (("merge", "merge"), ("detachment", "detach")):
                 if changed and word in reason:
                     self.eq.log.records.append({"kind": kind, "control": control.value})
@@ -171,7 +202,8 @@ class Relaxation:
         else:
             return self._failed(x, f"did not stop within {self.max_steps} steps")
         self.eq.log.event(f"the edges moved in {moved} steps of their overdamped motion")
-        return self.eq.solve(x, control, use_fallback=False, **self._finish)
+        out = self._settle(x, control)
+        return self._failed(x, "met a merge or a split it does not reach") if out is None else out
 
     @staticmethod
     def _travels(track: list) -> bool:

@@ -33,6 +33,12 @@ class State:
     residual: float = 0.0
     message: str = ""
     system: Any = None
+    #: a contact-set change the solve stopped at instead of making it (``Equilibrium.solve``
+    #: with ``changes=False``): "birth", "merge", "detachment" or "split"; "" otherwise
+    change: str = ""
+    #: with ``change == "birth"``: the smallest gap outside the contacts (negative: the
+    #: profile penetrates there)
+    gap: float = float("nan")
 
     @property
     def converged(self) -> bool:
