@@ -31,6 +31,7 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
+from ...contact.mesh import same_zones, zone_patterns
 from ...contact.topology import TWO_PI, TopologyChange, repair
 from .path import STEP_REDUCTION
 from .sets import MIN_GAP, MIN_WIDTH, Control
@@ -41,6 +42,9 @@ from .state import Outcome, State
 SETTLED = 1e3
 #: The largest step times the fastest growth rate of an unstable mode of the motion.
 UNSTABLE_STEP = 0.5
+#: The motion's mesh zones are remade for its edges at most this many times in one motion, when
+#: the motion nears its end (the equilibrium solve would remake them).
+REZONED = 4
 #: Accepted steps taken with one Jacobian (linearly implicit Euler stays consistent with an
 #: older one; a rejected step or a new contact set takes a fresh one).
 JACOBIAN_AGE = 8
@@ -130,13 +134,24 @@ class Relaxation:
         track: list = []        # (total width, mean edge position, edges) since the last
         #                         change of the contact set
         J = None                # the Jacobian of the steps: kept while they are accepted
+        rezoned = 0
         age = 0
         moved = 0
         r = self._residual(system, x)
         for _ in range(self.max_steps):
             if r is None:
                 return self._failed(x, "met a contact set without a valid field")
-            if np.max(np.abs(r)) <= settled:
+            near = np.max(np.abs(r)) <= settled
+            if (near or shortcut) and rezoned < REZONED:
+                fresh = self._fresh(system, x, control)
+                if fresh is not None:
+                    # the edges have moved out of the mesh zones they were solved with, which
+                    # the equilibrium solve would remake: the motion goes on, on the new ones
+                    system, J, rezoned = fresh, None, rezoned + 1
+                    systems.append(system)
+                    r = self._residual(system, x)
+                    continue
+            if near:
                 break
             if J is None or age >= JACOBIAN_AGE:
                 J, age = self._jacobian(system, x), 0
@@ -204,6 +219,16 @@ class Relaxation:
         self.eq.log.event(f"the edges moved in {moved} steps of their overdamped motion")
         out = self._settle(x, control)
         return self._failed(x, "met a merge or a split it does not reach") if out is None else out
+
+    def _fresh(self, system, x: np.ndarray, control: Control):
+        """A new edge system for ``x`` when the mesh zones or element counts of ``system``
+        are not those ``x`` is given (the edges moved out of them), else None."""
+        eq = self.eq
+        counts = eq.policy.counts_for(x)
+        if (counts is None or system.counts is None or tuple(counts) == tuple(system.counts)) \
+                and same_zones(system.zones, zone_patterns(x, eq.spec, system.counts)):
+            return None
+        return eq.system(control, x)
 
     @staticmethod
     def _travels(track: list) -> bool:
