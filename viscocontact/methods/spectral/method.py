@@ -28,6 +28,7 @@ from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
 from .operator import OperatorCache, convolve, power
 from .solvers import GridSolution, grid_solve, violation
+from .traction import grid_law
 
 #: Fewest cells ``points`` may ask for.
 MIN_POINTS = 64
@@ -114,7 +115,7 @@ def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int
         return GridMeasures(grid=grid, solution=solution, edges=np.zeros((0, 2)), area=TWO_PI,
                             friction=mu, **extra)
     gap = convolve(p, eigenvalues, workers) - (grid.heights - 1.0 + solution.penetration)
-    shifted = p if law is None else np.where(contact, p + law.strength, 0.0)
+    shifted = p if law is None else np.where(contact, p + law.strength * weights, 0.0)
     edges = contact_edges(grid.start, grid.cell, shifted, gap)
     area = float(min(np.sum(edges[:, 1] - edges[:, 0]), TWO_PI)) if edges.size else 0.0
     return GridMeasures(grid=grid, solution=solution, edges=edges, area=area, friction=mu,
@@ -270,9 +271,7 @@ class Spectral(SolutionMethod):
             return None
         if amplitude is None:
             amplitude = float(problem.profile.peak()[1])
-        law = problem.adhesion.cohesive_law(amplitude)
-        return None if law is None else GridLaw(strength=float(law[0]), opening=float(law[1]),
-                                                zone=float(law[2]))
+        return grid_law(problem.adhesion, amplitude)
 
     @staticmethod
     def zone_points(law: GridLaw) -> int:
