@@ -277,7 +277,8 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
                               penetration=penetration, start=start,
                               start_penetration=start_penetration, tolerance=tolerance,
                               krylov_tolerance=krylov_tolerance, max_updates=max_updates,
-                              max_iterations=max_iterations, workers=workers)
+                              max_iterations=max_iterations, max_sets=max_sets,
+                              workers=workers)
     lam = circulant.eigenvalues
     r = np.asarray(heights, dtype=float)
     n = r.size

@@ -149,18 +149,24 @@ def traction_solve(circulant, heights, law: GridTraction, *, mean_pressure=None,
         shifted = r + convolve(t, lam, workers)
         control: dict[str, Any] = ({"mean_pressure": float(mean_pressure) + float(t.mean())}
                                    if load else {"penetration": float(penetration)})
-        sol = grid_solve(circulant, shifted, start=q if q.any() else None,
-                         start_penetration=delta if load else None,
-                         presolve=k == 1 and not circulant.symmetric, tolerance=tolerance,
-                         krylov_tolerance=krylov_tolerance, max_updates=max_updates,
-                         max_iterations=max_iterations, workers=workers, **control)
-        iterations += sol.iterations
-        applications += sol.applications
-        if not sol.converged:
-            message = f"inner solve: {sol.message}"
-            break
-        q, delta = sol.pressure, float(sol.penetration)
-        g = convolve(q, lam, workers) - (shifted - 1.0 + delta)
+        if not load and np.all(shifted - 1.0 + penetration <= 0.0):
+            # nothing reaches the wall: no contact pressure (the solvers need a contact)
+            q, delta = np.zeros(r.size), float(penetration)
+            g = -(shifted - 1.0 + delta)
+        else:
+            sol = grid_solve(circulant, shifted, start=q if q.any() else None,
+                             start_penetration=delta if load else None,
+                             presolve=not (circulant.symmetric or q.any()),
+                             tolerance=tolerance, krylov_tolerance=krylov_tolerance,
+                             max_updates=max_updates, max_iterations=max_iterations,
+                             workers=workers, **control)
+            iterations += sol.iterations
+            applications += sol.applications
+            if not sol.converged:
+                message = f"inner solve: {sol.message}"
+                break
+            q, delta = sol.pressure, float(sol.penetration)
+            g = convolve(q, lam, workers) - (shifted - 1.0 + delta)
         f = law.tension(np.where(q > 0, 0.0, g)) - t
         change = float(np.max(np.abs(f))) / law.strength
         if change <= 10.0 * tolerance:
@@ -177,7 +183,7 @@ def traction_solve(circulant, heights, law: GridTraction, *, mean_pressure=None,
     out = GridSolution(pressure=p, penetration=float(delta if delta is not None else np.nan),
                        converged=converged, residual=res, iterations=iterations,
                        applications=applications,
-                       solver="traction " + (sol.solver if sol is not None else "grid"),
+                       solver="traction " + (sol.solver if sol is not None else "free"),
                        message=message)
     return CohesiveSolution(solution=out, contact=contact, weights=t / law.strength, gap=gap,
                             sets=k)
