@@ -59,7 +59,7 @@ class LennardJones(AdhesionModel):
     --------
     >>> lj = LennardJones(gamma=1e-3, range=0.01)
     >>> float(lj.traction(0.0)), round(float(lj.strength(1.0)), 4)
-    (0.0, 0.6448)
+    (0.0, 0.6449)
     """
 
     gamma: float = attrs.field(validator=in_range(0.0))
