@@ -94,14 +94,17 @@ def retraction(problem: ArealProblem, penetrations, points: tuple[int, int], *,
         raise ValidationError("ArealProblem.adhesion", problem.adhesion,
                               "an adhesion model with a traction law (a retraction's pull-off)")
     op = kernel.circulant(nx, ny)
-    options = dict(method._grid_options(), rows=ny, contact_start=True, max_sets=max_sets)
+    options = dict(tolerance=method.residual, krylov_tolerance=method.krylov_tolerance,
+                   max_updates=method.max_updates, max_iterations=method.max_iterations,
+                   workers=method.workers or 1)
     # the path starts from the adhesionless contact at its first penetration
     p = grid_solve(op, r, penetration=float(pens[0]), presolve=not op.symmetric,
-                   **method._grid_options()).pressure
+                   **options).pressure
     loads, cells, done = [], [], []
     converged, message = True, "converged"
     for d in pens:
-        solved = cohesive_solve(op, r, law, penetration=float(d), start=p, **options)
+        solved = cohesive_solve(op, r, law, penetration=float(d), start=p, rows=ny,
+                                contact_start=True, max_sets=max_sets, **options)
         if not solved.solution.converged:
             converged, message = False, f"Δ̃ = {d:.6g}: {solved.solution.message}"
             break

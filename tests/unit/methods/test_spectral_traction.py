@@ -90,3 +90,18 @@ def test_a_tension_that_does_not_settle_is_reported():
                          penetration=0.05, start=np.zeros(256), max_sets=2)
     assert not out.solution.converged
     assert "did not settle in 2" in out.solution.message
+
+
+def test_a_law_that_never_falls_off_is_refused():
+    """A plugin's traction that stays at its peak at every gap has no range for the grid."""
+    import attrs
+
+    @attrs.frozen(kw_only=True)
+    class Flat(LennardJones):
+        def traction(self, gap):
+            return np.full(np.shape(gap), self.strength(1.0))
+
+    from viscocontact.errors import ValidationError
+
+    with pytest.raises(ValidationError, match="Flat.traction"):
+        grid_law(Flat(gamma=1e-3, range=0.01), 0.1)

@@ -27,6 +27,7 @@ from typing import Any, Callable
 import attrs
 import numpy as np
 
+from ...errors import ValidationError
 from .operator import convolve
 from .solvers import GridSolution, grid_solve, violation
 
@@ -100,8 +101,13 @@ def grid_law(model, amplitude: float):
         return None
     peak = float(model.strength(amplitude)) * amplitude
     reach = float(model.range)
-    while float(model.traction(reach)) > TAIL * peak:
+    for _ in range(64):
+        if float(model.traction(reach)) <= TAIL * peak:
+            break
         reach *= 2.0
+    else:
+        raise ValidationError(f"{type(model).__name__}.traction", model,
+                              f"a law whose tension falls below {TAIL:g} of its peak at some gap")
     return GridTraction(law=model.traction, amplitude=float(amplitude),
                         strength=peak / amplitude, zone=float(model.quasi_static_zone),
                         opening=reach / amplitude, scale=float(model.range) / amplitude)
