@@ -114,6 +114,11 @@ def grid_law(model, amplitude: float):
                        zone=float(dugdale[2]))
     if model.traction(0.0) is None:
         return None
+    missing = [name for name in ("strength", "quasi_static_zone") if not hasattr(model, name)]
+    if missing:
+        raise ValidationError(f"{type(model).__name__}", model,
+                              "a traction law with its peak strength(amplitude) and the "
+                              f"length quasi_static_zone (missing: {', '.join(missing)})")
     peak = float(model.strength(amplitude)) * amplitude
     reach = float(model.range)
     for _ in range(64):
