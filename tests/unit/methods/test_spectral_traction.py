@@ -105,3 +105,15 @@ def test_a_law_that_never_falls_off_is_refused():
 
     with pytest.raises(ValidationError, match="Flat.traction"):
         grid_law(Flat(gamma=1e-3, range=0.01), 0.1)
+
+
+def test_auto_sends_a_traction_law_to_the_grid():
+    """No edge condition for the BEM: ``auto`` takes the spectral method, which solves it."""
+    from viscocontact.methods.auto import Auto
+
+    prob = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(),
+                          solver=Bisection(), adhesion=LJ, mean_pressure=0.2)
+    method, why = Auto().choose(prob)
+    assert method.name == "spectral" and "no edge condition" in why
+    r = prob.solve()
+    assert r.converged and r.extras["method"] == "spectral"
