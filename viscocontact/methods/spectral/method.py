@@ -383,10 +383,12 @@ class Spectral(SolutionMethod):
                    else "penetration control, Δ̃ = " + f"{problem.penetration:g}")
         cohesive = () if law is None else (PlanStep(
             stage="adhesion",
-            choice=f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the gap "
-                   f"is below η = {law.opening:.4g}; tips between cells by the secant of the "
-                   f"gap; {zone_cells(law, n):.0f} cells per quasi-static zone "
-                   f"q0a0 = {law.zone:.3g} on the first trusted grid",
+            choice=(f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the "
+                    f"gap is below η = {law.opening:.4g}; tips between cells by the secant of "
+                    "the gap; " if isinstance(law, GridLaw) else
+                    f"traction law cell by cell: peak tension {law.strength:.4g}, the tension "
+                    "a fixed point of the gaps; ") + f"{zone_cells(law, n):.0f} cells per "
+                   f"quasi-static zone q0a0 = {law.zone:.3g} on the first trusted grid",
             reason=f"{type(problem.adhesion).__name__}: at least {CELLS_PER_ZONE:g} cells per "
                    "zone; from the adhesionless contact, not along a loading path (a JKR-like "
                    "scene with several equilibria may end on another one than the BEM's)"),)
