@@ -11,15 +11,14 @@ The tension is then the fixed point ``t = t(g(t))``, found by Anderson's acceler
 iteration (:data:`ANDERSON` last steps) started from the warm start's tension; converged when
 no cell's tension changes by more than ``10·tolerance`` of the law's peak. Each free cell's
 update is divided by ``1 + t'(g)·A_ii`` (its own stiffness against its self-compliance, the
-local part of the map's Jacobian, at least :data:`LOCAL_FLOOR`): at a contact's edge the plain
-iteration overshoots there (on a cap at Tabor's μ = 1, 64²: 2.7 s instead of 10 s along a
-retraction, and μ = 2 settles).
+local part of the map's Jacobian, at least :data:`LOCAL_FLOOR`), where the plain iteration
+overshoots at a contact's edge.
 
 The iteration settles where the law is soft against the solid (Tabor's parameter up to about
 1-2 on a cap: the DMT side and the transition); towards the JKR side the traction is stiffer
 than the solid around the edge and the equilibria are several (jumps): the iteration may then
-not settle, which it reports (``converged=False``). A Dugdale
-law (a step) has its own solver by tips (:mod:`~viscocontact.methods.spectral.cohesive`).
+not settle, which it reports (``converged=False``). A Dugdale law (a step) has its own solver
+by tips (:mod:`~viscocontact.methods.spectral.cohesive`).
 
 :func:`grid_law` turns a model into the grid's law: the Dugdale form where the model has one
 (:meth:`~viscocontact.adhesion.AdhesionModel.cohesive_law`), else its traction.
