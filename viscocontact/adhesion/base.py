@@ -53,6 +53,13 @@ Contract for implementers
     to the result's message and ``extras["outside_model"]`` and issues a
     :class:`~viscocontact.errors.ModelValidityWarning`. The default: the model holds.
 
+11. Optionally, :meth:`traction` gives the model's traction-separation law itself: the tension
+    (``2σ/(E*q0)``, i.e. ``σ̃Λ̃`` in eq. 4.17 units) at a gap ``q0·g >= 0`` beyond contact,
+    with :meth:`strength` its peak over ``Λ̃`` and :attr:`quasi_static_zone` the length the
+    grid must resolve. The grids apply it cell by cell
+    (:func:`~viscocontact.methods.spectral.traction.grid_law`): by the tips of item 8 when the
+    model has a Dugdale form, else through the traction itself. The default (``None``): none.
+
 Every method receives an :class:`~viscocontact.contact.edges.EdgeContext`, which computes
 stress-intensity factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
 """
@@ -145,6 +152,11 @@ class AdhesionModel(abc.ABC):
         """``(σ̃0, η, a0)``: a uniform tension σ̃0 (eq. 4.17 units) wherever the gap, in units
         of the amplitude, is below η, and the length ``q0a0`` that its zones span at least
         (the grid must resolve it); None when the model has no such law (contract item 8)."""
+        return None
+
+    def traction(self, gap) -> np.ndarray | None:
+        """The tension ``σ̃Λ̃ = 2σ/(E*q0)`` at the gaps ``gap`` (``q0·g >= 0`` beyond contact),
+        or None when the model has no traction-separation law (contract item 11)."""
         return None
 
     @abc.abstractmethod

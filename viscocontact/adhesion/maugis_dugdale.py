@@ -116,6 +116,12 @@ class MaugisDugdale(AdhesionModel):
         (Dugdale, ``d = πK²/(8σ0²)`` with ``G = Δγ``); ``inf`` without adhesion."""
         return self.range**2 / (4.0 * self.gamma) if self.gamma > 0 else np.inf
 
+    def traction(self, gap) -> np.ndarray:
+        """Dugdale's step: ``σ̃0Λ̃ = 2πγ̃/h̃0`` where ``0 <= q0·g < h̃0``, 0 beyond (contract
+        item 11; the grids apply it by its tips, :meth:`cohesive_law`)."""
+        g = np.asarray(gap, dtype=float)
+        return np.where(g < self.range, 2.0 * np.pi * self.gamma / self.range, 0.0)
+
     def cohesive_law(self, amplitude: float) -> tuple[float, float, float] | None:
         """``(σ̃0, η, q0a0)`` for the spectral method's grid (:meth:`strength`,
         :meth:`opening`, :attr:`quasi_static_zone`); None without adhesion."""

@@ -40,6 +40,7 @@ from ..methods.spectral.cohesive import (CELLS_PER_ZONE, GridLaw, cohesive_solve
 from ..methods.spectral.method import estimate
 from ..methods.spectral.operator import Circulant, convolve
 from ..methods.spectral.solvers import GridSolution, grid_solve, violation
+from ..methods.spectral.traction import grid_law
 from ..result import ContactResult, SolveStatus
 from .kernels import ArealKernel
 from .problem import ArealProblem
@@ -342,7 +343,7 @@ class ArealSpectral:
             contact = p > 0
             shifted = p
         else:        # the Maugis-Dugdale edge has the adhesionless field of p + σ̃0
-            shifted = np.where(contact, p + law.strength, 0.0)
+            shifted = np.where(contact, p + law.strength * weights, 0.0)
         area = TWO_PI * area_fraction(shifted.reshape(shape), gap.reshape(shape),
                                       level.direction)
         return Measured(level=level, solution=sol, gap=gap, area=area,
@@ -375,11 +376,11 @@ class ArealSpectral:
         model = problem.adhesion
         if model is None or not float(model.work_of_adhesion) > 0:
             return None
-        law = model.cohesive_law(amplitude)
+        law = grid_law(model, amplitude)
         if law is None:
-            raise ValidationError("ArealProblem.adhesion", model,
-                                  "a finite-range law with a cohesive form (maugis-dugdale)")
-        return GridLaw(strength=float(law[0]), opening=float(law[1]), zone=float(law[2]))
+            raise ValidationError("ArealProblem.adhesion", model, "a finite-range law with a "
+                                  "traction (maugis-dugdale, lennard-jones)")
+        return law
 
 def _assemble(method: ArealSpectral, kernel: ArealKernel, current: Measured, amplitude: float,
               m2: float, counts: tuple[int, int], fields: bool, common: dict,

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..kernels.clausen import TWO_PI
-from ..methods.spectral.cohesive import CELLS_PER_ZONE, zone_cells
+from ..methods.spectral.cohesive import CELLS_PER_ZONE, GridLaw, zone_cells
 from ..plan import PlanStep, SolvePlan
 
 
@@ -35,9 +35,12 @@ def plan_steps(method, problem) -> SolvePlan:
         cells = zone_cells(law, nx)
         cohesive = (PlanStep(
             stage="adhesion",
-            choice=f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the "
-                   f"gap is below η = {law.opening:.4g}; tips along the rows; {cells:.1f} "
-                   f"cells per quasi-static zone q0a0 = {law.zone:.3g}",
+            choice=(f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the "
+                    f"gap is below η = {law.opening:.4g}; tips along the rows; "
+                    if isinstance(law, GridLaw) else
+                    f"traction law cell by cell: peak tension {law.strength:.4g}, the tension "
+                    "a fixed point of the gaps; ") + f"{cells:.1f} cells per quasi-static "
+                   f"zone q0a0 = {law.zone:.3g}",
             reason=(f"at least {CELLS_PER_ZONE:g} cells per zone wanted" if
                     cells >= CELLS_PER_ZONE else
                     f"UNDER-RESOLVED: fewer than {CELLS_PER_ZONE:g} cells per zone; the "

@@ -62,8 +62,9 @@ class ArealProblem:
     aspect : float
         ``L_y/L_x`` of an array's cell (a Surface has its own; default 1).
     adhesion : AdhesionModel or None
-        A finite-range law applied cell by cell (:meth:`AdhesionModel.cohesive_law`:
-        :class:`~viscocontact.adhesion.MaugisDugdale`); None: adhesionless.
+        A traction law applied cell by cell (:meth:`AdhesionModel.cohesive_law`:
+        :class:`~viscocontact.adhesion.MaugisDugdale`; :meth:`AdhesionModel.traction`:
+        :class:`~viscocontact.adhesion.LennardJones`); None: adhesionless.
     """
 
     surface: Any = attrs.field(converter=_heights_field)

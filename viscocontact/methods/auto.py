@@ -50,6 +50,12 @@ class Auto(SolutionMethod):
 
         spectral = self.spectral()
         gamma = float(problem.adhesion.work_of_adhesion)
+        adhesion = problem.adhesion
+        if gamma > 0 and adhesion.cohesive_law(1.0) is None and adhesion.traction(0.0) is not None:
+            # a traction law without a Dugdale form has no edge condition for the BEM
+            return spectral, (f"traction law on every gap ({type(adhesion).__name__}): no edge "
+                              "condition for the boundary-element method; the grid applies it "
+                              "cell by cell")
         if gamma > 0:
             # the grid applies a cohesive law too (a cross-check of the BEM), but an adhesive
             # equilibrium depends on the path that reached it, which the BEM follows

@@ -92,7 +92,9 @@ quasi-static zone on the first trusted grid), so this is the low-Tabor side: the
 the BEM's cohesive zones where they are wide (``docs/cohesive.md``, "The spectral
 cross-check"). It starts from the adhesionless contact, not along a loading path, so a scene
 with several equilibria may end on another one than the BEM's; :class:`~viscocontact.methods.
-auto.Auto` keeps adhesive scenes on the BEM.
+auto.Auto` keeps adhesive scenes on the BEM. A model with only a smooth traction
+(:meth:`AdhesionModel.traction`; :class:`~viscocontact.adhesion.LennardJones`) is applied cell by
+cell as a tension at every gap (:mod:`~viscocontact.methods.spectral.traction`).
 
 Limits: adhesive scenes without a cohesive law, short-range laws (use the BEM); contacts narrower than two cells get their cells as
 their extent (the estimate sees them and refines); the active set may fail on very

@@ -131,7 +131,10 @@ def law_violation(pressure, gap, contact, weights, law: GridLaw) -> float:
     """The largest violation of the cohesive law, in units of the amplitude: the adhesionless
     conditions of ``q = p + σ̃0 w`` (:func:`~.solvers.violation` on the contact cells), ``g < η``
     on the cells wholly under the cohesive stress and ``g >= η`` on the free ones (the cells
-    that hold a tip straddle ``η``)."""
+    that hold a tip straddle ``η``); a smooth traction law's own
+    (:meth:`~.traction.GridTraction.violation`)."""
+    if not isinstance(law, GridLaw):
+        return law.violation(pressure, gap, contact)
     g = np.asarray(gap, float)
     w = np.asarray(weights, float)
     out = violation(g, contact)
@@ -268,6 +271,14 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         1D method) an inner solve starts from every cell the shifted pressure loads and is
         solved to ``tolerance``.
     """
+    if not isinstance(law, GridLaw):       # a smooth traction law (no tips)
+        from .traction import traction_solve
+        return traction_solve(circulant, heights, law, mean_pressure=mean_pressure,
+                              penetration=penetration, start=start,
+                              start_penetration=start_penetration, tolerance=tolerance,
+                              krylov_tolerance=krylov_tolerance, max_updates=max_updates,
+                              max_iterations=max_iterations, max_sets=max_sets,
+                              workers=workers)
     lam = circulant.eigenvalues
     r = np.asarray(heights, dtype=float)
     n = r.size

@@ -28,6 +28,7 @@ from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
 from .operator import OperatorCache, convolve, power
 from .solvers import GridSolution, grid_solve, violation
+from .traction import grid_law
 
 #: Fewest cells ``points`` may ask for.
 MIN_POINTS = 64
@@ -114,7 +115,7 @@ def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int
         return GridMeasures(grid=grid, solution=solution, edges=np.zeros((0, 2)), area=TWO_PI,
                             friction=mu, **extra)
     gap = convolve(p, eigenvalues, workers) - (grid.heights - 1.0 + solution.penetration)
-    shifted = p if law is None else np.where(contact, p + law.strength, 0.0)
+    shifted = p if law is None else np.where(contact, p + law.strength * weights, 0.0)
     edges = contact_edges(grid.start, grid.cell, shifted, gap)
     area = float(min(np.sum(edges[:, 1] - edges[:, 0]), TWO_PI)) if edges.size else 0.0
     return GridMeasures(grid=grid, solution=solution, edges=edges, area=area, friction=mu,
@@ -270,9 +271,7 @@ class Spectral(SolutionMethod):
             return None
         if amplitude is None:
             amplitude = float(problem.profile.peak()[1])
-        law = problem.adhesion.cohesive_law(amplitude)
-        return None if law is None else GridLaw(strength=float(law[0]), opening=float(law[1]),
-                                                zone=float(law[2]))
+        return grid_law(problem.adhesion, amplitude)
 
     @staticmethod
     def zone_points(law: GridLaw) -> int:
@@ -384,10 +383,12 @@ class Spectral(SolutionMethod):
                    else "penetration control, Δ̃ = " + f"{problem.penetration:g}")
         cohesive = () if law is None else (PlanStep(
             stage="adhesion",
-            choice=f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the gap "
-                   f"is below η = {law.opening:.4g}; tips between cells by the secant of the "
-                   f"gap; {zone_cells(law, n):.0f} cells per quasi-static zone "
-                   f"q0a0 = {law.zone:.3g} on the first trusted grid",
+            choice=(f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the "
+                    f"gap is below η = {law.opening:.4g}; tips between cells by the secant of "
+                    "the gap; " if isinstance(law, GridLaw) else
+                    f"traction law cell by cell: peak tension {law.strength:.4g}, the tension "
+                    "a fixed point of the gaps; ") + f"{zone_cells(law, n):.0f} cells per "
+                   f"quasi-static zone q0a0 = {law.zone:.3g} on the first trusted grid",
             reason=f"{type(problem.adhesion).__name__}: at least {CELLS_PER_ZONE:g} cells per "
                    "zone; from the adhesionless contact, not along a loading path (a JKR-like "
                    "scene with several equilibria may end on another one than the BEM's)"),)
