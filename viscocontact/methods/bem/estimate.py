@@ -1,13 +1,12 @@
 r"""The BEM's error estimate: the converged equilibrium solved again on a coarser mesh.
 
-Two coarse meshes, each solved at the same control from the converged edges (a few Newton-type
+Coarser meshes, each solved at the same control from the converged edges (a few Newton-type
 iterations): half the elements per contact and half the interior resolution
 (:func:`fewer_elements`; a sharp edge's zone follows the elements,
 :data:`~viscocontact.methods.bem.meshing.SHARP_ELEMENTS`), and, when the mesh has edge zones,
-zones twice as coarse (:func:`coarser_edges`: twice the edge element and the grading's excess
-``g - 1``). Richardson's rule turns each change of Ã and μ into an error,
-``|Ã_coarse - Ã| / (2^p - 1)`` at the order of its kind, and the estimate is their sum, relative
-to Ã (``μ`` relative to ``max(|μ|, FRICTION_FLOOR·√m2)``, as the spectral method's).
+twice the grading's excess ``g - 1`` and twice the edge element, each alone. Richardson's rule
+turns each change of Ã and μ into an error, ``|Ã_coarse - Ã| / (2^p - 1)`` at the order of its
+kind, and the estimate is their sum, relative to Ã (``μ`` relative to ``max(|μ|, FRICTION_FLOOR·√m2)``, as the spectral method's).
 """
 from __future__ import annotations
 
@@ -26,9 +25,9 @@ from .state import Outcome, State
 #: under-states the error (Johnson with δX = 0: 0.66 of it at N = 128 taken at order 2); at order
 #: 1 the estimate is the whole change, about three times a second-order error.
 ELEMENT_ORDER = 1.0
-#: Order assumed for the change under edge zones twice as coarse (``edge_resolution`` and the
-#: grading's excess doubled): on Johnson's wavy contact with δX = 1e-4 the area changes by
-#: 1.4e-4 from g = 1.15 to 1.3 at 128 elements, against an error of 2.7e-5 at g = 1.15.
+#: Order assumed for the change under twice the edge element or twice the grading's excess: on
+#: Johnson's wavy contact with δX = 1e-4 the area changes by 1.4e-4 from g = 1.15 to 1.3 at 128
+#: elements, against an error of 2.7e-5 at g = 1.15.
 EDGE_ORDER = 2.0
 #: ``μ`` is resolved relative to ``max(|μ|, FRICTION_FLOOR·√m2)`` (it vanishes on an elastic
 #: solid), as in :class:`~viscocontact.methods.spectral.Spectral`.
@@ -43,19 +42,21 @@ def fewer_elements(disc):
                              else max(1.0, 0.5 * disc.interior_resolution)))
 
 
-def coarser_edges(disc):
-    """``disc`` with edge zones twice as coarse: twice the edge element and twice the grading's
-    excess ``g - 1`` (at most 1 and 2)."""
-    return attrs.evolve(
-        disc, grading=min(2.0, 1.0 + 2.0 * (disc.grading - 1.0)),
-        edge_resolution=(None if disc.edge_resolution is None
-                         else min(1.0, 2.0 * disc.edge_resolution)))
+def coarser_grading(disc):
+    """``disc`` with twice the grading's excess ``g - 1`` in the edge zones (at most 2)."""
+    return attrs.evolve(disc, grading=min(2.0, 1.0 + 2.0 * (disc.grading - 1.0)))
+
+
+def coarser_edge_element(disc):
+    """``disc`` with twice the edge element (``edge_resolution``, at most 1)."""
+    return attrs.evolve(disc, edge_resolution=min(1.0, 2.0 * disc.edge_resolution))
 
 
 @attrs.frozen(kw_only=True)
 class Coarse:
     """One coarse solve of an estimate: Ã and μ (NaN when it did not converge), its elements per
-    contact, residual evaluations, time, and what it is (``"elements"`` or ``"edges"``)."""
+    contact, residual evaluations, time, and what was coarsened (``"elements"``,
+    ``"grading"`` or ``"edge element"``)."""
 
     kind: str
     area: float
@@ -139,17 +140,21 @@ def estimate(problem, prep, spec, state: State, target) -> Estimate:
     :class:`~.sets.Control`; ``spec`` its :class:`~viscocontact.contact.mesh.MeshSpec`).
 
     The change of Ã and μ under half the elements (:func:`fewer_elements`) at
-    :data:`ELEMENT_ORDER`, plus, when the mesh has edge zones, the change under zones twice as
-    coarse (:func:`coarser_edges`) at :data:`EDGE_ORDER`: the two do not follow one power, and
-    their changes can cancel when both are coarsened at once (Johnson, δX = 1e-4, 128 elements:
-    +2.0e-5 from the elements, -1.4e-4 from the grading, +1.4e-5 with both).
+    :data:`ELEMENT_ORDER`, plus, when the mesh has edge zones, the changes under twice the
+    grading's excess (:func:`coarser_grading`) and twice the edge element
+    (:func:`coarser_edge_element`) at :data:`EDGE_ORDER`, each coarsened alone: they do not
+    follow one power, and their changes cancel when they are coarsened at once (Johnson,
+    δX = 1e-4, 128 elements: +2.0e-5 from the elements, -1.4e-4 from the grading, +2.5e-5 from
+    the edge element, +1.4e-5 with all three).
     """
     disc = problem.discretization
     runs = [(coarse_solve(problem, prep, state, target, "elements", fewer_elements(disc)),
              ELEMENT_ORDER)]
     if spec.smallest is not None:
-        runs.append((coarse_solve(problem, prep, state, target, "edges", coarser_edges(disc)),
-                     EDGE_ORDER))
+        for kind, coarser in (("grading", coarser_grading),
+                              ("edge element", coarser_edge_element)):
+            runs.append((coarse_solve(problem, prep, state, target, kind, coarser(disc)),
+                         EDGE_ORDER))
     fine = measures(prep, state)
     area = mu = 0.0
     for run, order in runs:

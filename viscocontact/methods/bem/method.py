@@ -45,13 +45,15 @@ class BEM(SolutionMethod):
     Parameters
     ----------
     estimate_error : bool
-        Solve a converged equilibrium again on a mesh with every size doubled, from its edges,
-        for ``extras["error_estimate"]`` (:mod:`~viscocontact.methods.bem.estimate`); ``False``:
-        NaN, and no second solve.
+        Solve a converged equilibrium again from its edges on coarser meshes (half the elements;
+        with edge zones also twice the grading's excess and twice the edge element) for
+        ``extras["error_estimate"]`` (:mod:`~viscocontact.methods.bem.estimate`). Off by
+        default (NaN): on the wavy thesis scene it costs 16-58 % of the solve's residual
+        evaluations and 10-60 % of its time.
     """
 
     name: ClassVar[str] = "bem"
-    estimate_error: bool = attrs.field(default=True, validator=attrs.validators.instance_of(bool))
+    estimate_error: bool = attrs.field(default=False, validator=attrs.validators.instance_of(bool))
 
     def plan_steps(self, problem, prepared) -> tuple:
         from .planning import bem_steps
