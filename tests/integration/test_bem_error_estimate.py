@@ -90,3 +90,14 @@ def test_johnson_area_under_refinement_of_each_mesh_parameter(dx, disc):
     assert abs(err) < (5e-5 if dx == 0.0 else 2e-4), err
     if dx > 0:
         assert np.isclose(err, -8.3e-5, rtol=0, atol=5e-5)
+
+
+@pytest.mark.parametrize("edge_resolution", [0.2, 0.5])
+def test_johnson_area_with_a_coarser_edge_element(edge_resolution):
+    """δX = 1e-4 with 5 and 2 edge elements per advance: the bordered balance as at the default
+    (10 per advance), 1e-8 and 7e-6 from the default's area; the re-meshed fallback it took below
+    8 elements per advance was 3.2e-5 lower, with difference Jacobians."""
+    default = _solve(0.0, 0.05, estimate=False)
+    r = _solve(0.0, 0.05, estimate=False, edge_resolution=edge_resolution)
+    assert r.converged, r.message
+    assert abs(r.area / default.area - 1) < 1.5e-5
