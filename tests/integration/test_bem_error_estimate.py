@@ -2,13 +2,14 @@
 each mesh parameter (δX = 1e-4 and δX = 0)."""
 import math
 
+import attrs
+
 import numpy as np
 import pytest
 
 from viscocontact.adhesion import EnergyBalance
 from viscocontact.methods.bem import BEM
-from viscocontact.methods.bem.estimate import (coarser_edge_element, coarser_grading,
-                                               fewer_elements)
+from viscocontact.methods.bem.estimate import coarser_zones, fewer_elements
 from viscocontact.problem import ContactProblem, Discretization
 from viscocontact.profiles import Sinusoid
 from viscocontact.reference import JohnsonWavy, westergaard_area
@@ -26,13 +27,14 @@ def _solve(p, gamma=None, dx=1e-4, estimate=True, **disc):
                           discretization=Discretization(**disc), **adhesion).solve()
 
 
-def test_coarser_meshes_double_one_size_each():
+def test_coarser_meshes():
     disc = Discretization()
     few = fewer_elements(disc)
     assert (few.elements, few.interior_resolution) == (32, 4.0)
     assert few.grading == disc.grading and few.edge_resolution == disc.edge_resolution
-    assert coarser_grading(disc).grading == pytest.approx(1.3)
-    assert coarser_edge_element(disc).edge_resolution == pytest.approx(0.2)
+    zones = coarser_zones(disc)
+    assert zones.grading == pytest.approx(1.3) and zones.edge_resolution == pytest.approx(0.2)
+    assert zones.elements == disc.elements
     assert fewer_elements(Discretization(elements=8)).elements == 8
 
 
@@ -48,13 +50,15 @@ def test_estimate_bounds_the_error_at_the_default_mesh(p, gamma):
     assert true <= r.error_estimate <= 4 * true, (true, r.error_estimate)
     assert r.extras["estimates"]["area"] <= r.error_estimate
     kinds = [c["kind"] for c in r.extras["coarse"]]
-    assert kinds == (["elements"] if gamma is None else ["elements", "grading", "edge element"])
+    assert kinds == (["elements"] if gamma is None else ["elements", "edge zones"])
     assert all(c["evaluations"] <= 10 for c in r.extras["coarse"])
 
 
-def test_estimate_is_off_by_default():
-    r = ContactProblem(profile=Sinusoid(amplitude=LAM), rheology=Elastic(), method=BEM(),
-                       mean_pressure=0.3).solve()
+def test_estimate_is_on_by_default_and_off_on_request():
+    problem = ContactProblem(profile=Sinusoid(amplitude=LAM), rheology=Elastic(), method=BEM(),
+                             mean_pressure=0.3)
+    assert problem.solve().error_estimate > 0
+    r = attrs.evolve(problem, method=BEM(estimate_error=False)).solve()
     assert r.converged and math.isnan(r.error_estimate)
     assert "coarse" not in r.extras
 

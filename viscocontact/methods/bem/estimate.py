@@ -4,9 +4,10 @@ Coarser meshes, each solved at the same control from the converged edges (a few 
 iterations): half the elements per contact and half the interior resolution
 (:func:`fewer_elements`; a sharp edge's zone follows the elements,
 :data:`~viscocontact.methods.bem.meshing.SHARP_ELEMENTS`), and, when the mesh has edge zones,
-twice the grading's excess ``g - 1`` and twice the edge element, each alone. Richardson's rule
-turns each change of Ã and μ into an error, ``|Ã_coarse - Ã| / (2^p - 1)`` at the order of its
-kind, and the estimate is their sum, relative to Ã (``μ`` relative to ``max(|μ|, FRICTION_FLOOR·√m2)``, as the spectral method's).
+zones twice as coarse (:func:`coarser_zones`: twice the grading's excess ``g - 1`` and twice
+the edge element). Richardson's rule turns each change of Ã and μ into an error,
+``|Ã_coarse - Ã| / (2^p - 1)`` at the order of its kind, and the estimate is their sum,
+relative to Ã (``μ`` relative to ``max(|μ|, FRICTION_FLOOR·√m2)``, as the spectral method's).
 """
 from __future__ import annotations
 
@@ -25,9 +26,10 @@ from .state import Outcome, State
 #: under-states the error (Johnson with δX = 0: 0.66 of it at N = 128 taken at order 2); at order
 #: 1 the estimate is the whole change, about three times a second-order error.
 ELEMENT_ORDER = 1.0
-#: Order assumed for the change under twice the edge element or twice the grading's excess: on
-#: Johnson's wavy contact with δX = 1e-4 the area changes by 1.4e-4 from g = 1.15 to 1.3 at 128
-#: elements, against an error of 2.7e-5 at g = 1.15.
+#: Order assumed for the change under edge zones twice as coarse: the grading's error grows as
+#: about ``(g - 1)^2.4`` (Johnson, δX = 1e-4, 64 elements: -1.6e-5, -5.0e-5, -1.0e-4 and
+#: -2.6e-4 at g = 1.1, 1.15, 1.2 and 1.3 against g = 1.05); the edge element's is small once
+#: zones are resolved (below 6e-6 from edge_resolution 0.1 to 0.2).
 EDGE_ORDER = 2.0
 #: ``μ`` is resolved relative to ``max(|μ|, FRICTION_FLOOR·√m2)`` (it vanishes on an elastic
 #: solid), as in :class:`~viscocontact.methods.spectral.Spectral`.
@@ -42,21 +44,20 @@ def fewer_elements(disc):
                              else max(1.0, 0.5 * disc.interior_resolution)))
 
 
-def coarser_grading(disc):
-    """``disc`` with twice the grading's excess ``g - 1`` in the edge zones (at most 2)."""
-    return attrs.evolve(disc, grading=min(2.0, 1.0 + 2.0 * (disc.grading - 1.0)))
-
-
-def coarser_edge_element(disc):
-    """``disc`` with twice the edge element (``edge_resolution``, at most 1)."""
-    return attrs.evolve(disc, edge_resolution=min(1.0, 2.0 * disc.edge_resolution))
+def coarser_zones(disc):
+    """``disc`` with edge zones twice as coarse: twice the grading's excess ``g - 1`` and twice
+    the edge element (``edge_resolution``), at most 2 and 1."""
+    return attrs.evolve(
+        disc, grading=min(2.0, 1.0 + 2.0 * (disc.grading - 1.0)),
+        edge_resolution=(None if disc.edge_resolution is None
+                         else min(1.0, 2.0 * disc.edge_resolution)))
 
 
 @attrs.frozen(kw_only=True)
 class Coarse:
     """One coarse solve of an estimate: Ã and μ (NaN when it did not converge), its elements per
-    contact, residual evaluations, time, and what was coarsened (``"elements"``,
-    ``"grading"`` or ``"edge element"``)."""
+    contact, residual evaluations, time, and what was coarsened (``"elements"`` or
+    ``"edge zones"``)."""
 
     kind: str
     area: float
@@ -140,21 +141,18 @@ def estimate(problem, prep, spec, state: State, target) -> Estimate:
     :class:`~.sets.Control`; ``spec`` its :class:`~viscocontact.contact.mesh.MeshSpec`).
 
     The change of Ã and μ under half the elements (:func:`fewer_elements`) at
-    :data:`ELEMENT_ORDER`, plus, when the mesh has edge zones, the changes under twice the
-    grading's excess (:func:`coarser_grading`) and twice the edge element
-    (:func:`coarser_edge_element`) at :data:`EDGE_ORDER`, each coarsened alone: they do not
-    follow one power, and their changes cancel when they are coarsened at once (Johnson,
-    δX = 1e-4, 128 elements: +2.0e-5 from the elements, -1.4e-4 from the grading, +2.5e-5 from
-    the edge element, +1.4e-5 with all three).
+    :data:`ELEMENT_ORDER`, plus, when the mesh has edge zones, the change under zones twice as
+    coarse (:func:`coarser_zones`) at :data:`EDGE_ORDER`, each coarsened alone: they do not
+    follow one power, and their changes have opposite signs on Johnson's contact with δX = 1e-4
+    (64 elements: +1.1e-4 from the elements, -2.1e-4 from the zones), so that coarsened at once
+    they would cancel.
     """
     disc = problem.discretization
     runs = [(coarse_solve(problem, prep, state, target, "elements", fewer_elements(disc)),
              ELEMENT_ORDER)]
     if spec.smallest is not None:
-        for kind, coarser in (("grading", coarser_grading),
-                              ("edge element", coarser_edge_element)):
-            runs.append((coarse_solve(problem, prep, state, target, kind, coarser(disc)),
-                         EDGE_ORDER))
+        runs.append((coarse_solve(problem, prep, state, target, "edge zones",
+                                  coarser_zones(disc)), EDGE_ORDER))
     fine = measures(prep, state)
     area = mu = 0.0
     for run, order in runs:
