@@ -115,13 +115,12 @@ def relative_changes(fine: tuple[float, float], coarse: tuple[float, float],
     return float(d_area), float(d_mu)
 
 
-def coarse_solve(problem, prep, state: State, target, kind: str, disc) -> Coarse:
-    """The equilibrium of ``problem`` with discretisation ``disc`` at ``target`` from the edges of
-    the converged ``state`` (its contact-set changes included, no polish)."""
-    from .method import Solve
-
+def coarse_solve(parts, prep, state: State, target, kind: str, disc) -> Coarse:
+    """The equilibrium with discretisation ``disc`` at ``target`` from the edges of the converged
+    ``state`` (its contact-set changes included, no polish); ``parts(disc)``: the solve's parts
+    for that discretisation (their ``equilibrium`` and ``log``)."""
     t0 = time.perf_counter()
-    solve = Solve(attrs.evolve(problem, discretization=disc), prep)
+    solve = parts(disc)
     out = solve.equilibrium.solve(state.edges, target, polish=False)
     common = dict(kind=kind, elements=disc.elements, evaluations=solve.log.evaluations,
                   seconds=time.perf_counter() - t0)
@@ -136,9 +135,11 @@ def coarse_solve(problem, prep, state: State, target, kind: str, disc) -> Coarse
     return Coarse(area=area, friction=mu, **common, message=message)
 
 
-def estimate(problem, prep, spec, state: State, target) -> Estimate:
-    """The error estimate of the converged ``state`` of ``problem`` at ``target`` (a
-    :class:`~.sets.Control`; ``spec`` its :class:`~viscocontact.contact.mesh.MeshSpec`).
+def estimate(parts, disc, prep, spec, state: State, target) -> Estimate:
+    """The error estimate of the converged ``state`` at ``target`` (a :class:`~.sets.Control`)
+    of a problem with discretisation ``disc`` (``spec`` its
+    :class:`~viscocontact.contact.mesh.MeshSpec`; ``parts(disc)`` the parts of its solve with
+    another discretisation, :class:`~viscocontact.methods.bem.method.Solve`).
 
     The change of Ã and μ under half the elements (:func:`fewer_elements`) at
     :data:`ELEMENT_ORDER`, plus, when the mesh has edge zones, the change under zones twice as
@@ -147,11 +148,10 @@ def estimate(problem, prep, spec, state: State, target) -> Estimate:
     (64 elements: +1.1e-4 from the elements, -2.1e-4 from the zones), so that coarsened at once
     they would cancel.
     """
-    disc = problem.discretization
-    runs = [(coarse_solve(problem, prep, state, target, "elements", fewer_elements(disc)),
+    runs = [(coarse_solve(parts, prep, state, target, "elements", fewer_elements(disc)),
              ELEMENT_ORDER)]
     if spec.smallest is not None:
-        runs.append((coarse_solve(problem, prep, state, target, "edge zones",
+        runs.append((coarse_solve(parts, prep, state, target, "edge zones",
                                   coarser_zones(disc)), EDGE_ORDER))
     fine = measures(prep, state)
     area = mu = 0.0

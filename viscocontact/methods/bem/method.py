@@ -128,7 +128,8 @@ class Solve:
             out = self.path.approach(target)
             if target.is_load and out.outcome is Outcome.CONVERGED and adhesive:
                 out = self.path.stable_under_load(out, target)
-        found = (estimate(self.problem, self.prep, self.spec, out, target)
+        found = (estimate(lambda disc: Solve(attrs.evolve(p, discretization=disc), self.prep),
+                          p.discretization, self.prep, self.spec, out, target)
                  if estimate_error and out.outcome is Outcome.CONVERGED else None)
         if found is not None:
             self.log.event(f"error estimate {found.error:.2g} (Ã {found.area:.2g}, μ "
