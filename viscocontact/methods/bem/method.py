@@ -56,9 +56,10 @@ class BEM(SolutionMethod):
     estimate_error: bool = attrs.field(default=True, validator=attrs.validators.instance_of(bool))
 
     def plan_steps(self, problem, prepared) -> tuple:
-        from .planning import bem_steps
+        from .planning import bem_steps, estimate_step
 
-        return bem_steps(problem, prepared)
+        steps = bem_steps(problem, prepared)
+        return (*steps, estimate_step(problem, prepared)) if self.estimate_error else steps
 
     def solve(self, problem, initial=None, *, fields: bool = False, prepared=None):
         prep = prepared if prepared is not None else problem.prepare()
