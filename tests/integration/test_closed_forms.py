@@ -61,7 +61,8 @@ def test_johnson_area_under_edge_refinement(edge_resolution):
 @pytest.mark.parametrize("p", [0.1, -0.02])
 def test_johnson_area_with_a_sharp_edge(p):
     """δX = 0 on the default mesh (an edge zone for the fitted K̃): 2.3e-5 and 1.6e-5 from
-    Johnson (second order in the elements: 6.6e-5 and 3.1e-5 with 32); without the zone the
+    Johnson (second order in the elements, the zone following them: 7.2e-5 and 4.5e-5 with 32,
+    8.0e-6 and 4.0e-6 with 128); without the zone the
     calibrated fit on the clustered mesh was 1.1e-3 and 8.4e-4 off."""
     gamma = 0.05
     r = _solve(mean_pressure=p, adhesion=EnergyBalance(gamma=gamma * LAM**2,

@@ -24,6 +24,7 @@ from ..base import SolutionMethod
 from .checks import Checks
 from .closed import ClosedContact
 from .equilibrium import Equilibrium
+from .estimate import estimate
 from .meshing import MeshPolicy, mesh_spec
 from .approach import Approach, ApproachOptions
 from .path import Path
@@ -39,21 +40,30 @@ class BEM(SolutionMethod):
 
     Its options (mesh, tolerances, solvers, restarts) are the problem's
     (:class:`~viscocontact.problem.ContactProblem`): ``discretization``, ``tolerances``,
-    ``solver``, ``fallback`` and ``max_restarts``. It solves every scene, adhesive or not; its
-    error estimate is not computed per solve (NaN): ``docs/verification.md`` gives the measured
-    discretisation errors of the default mesh.
+    ``solver``, ``fallback`` and ``max_restarts``. It solves every scene, adhesive or not.
+
+    Parameters
+    ----------
+    estimate_error : bool
+        Solve a converged equilibrium again from its edges on coarser meshes (half the elements;
+        with edge zones, zones twice as coarse) for ``extras["error_estimate"]``
+        (:mod:`~viscocontact.methods.bem.estimate`): 7-17 % of the solve's time on the thesis
+        scenes, plus about 0.6 s once per process and coarse mesh for its stress-intensity
+        calibration. ``False``: NaN, and no second solve.
     """
 
     name: ClassVar[str] = "bem"
+    estimate_error: bool = attrs.field(default=True, validator=attrs.validators.instance_of(bool))
 
     def plan_steps(self, problem, prepared) -> tuple:
-        from .planning import bem_steps
+        from .planning import bem_steps, estimate_step
 
-        return bem_steps(problem, prepared)
+        steps = bem_steps(problem, prepared)
+        return (*steps, estimate_step(problem, prepared)) if self.estimate_error else steps
 
     def solve(self, problem, initial=None, *, fields: bool = False, prepared=None):
         prep = prepared if prepared is not None else problem.prepare()
-        return Solve(problem, prep).run(initial, fields)
+        return Solve(problem, prep).run(initial, fields, self.estimate_error)
 
 
 class Solve:
@@ -81,7 +91,7 @@ class Solve:
         self.events = (Approach(self.path, ApproachOptions(path_step=disc.path_step))
                        if disc.approach == "events" else None)
 
-    def run(self, initial, want_fields: bool) -> ContactResult:
+    def run(self, initial, want_fields: bool, estimate_error: bool = False) -> ContactResult:
         t0 = time.perf_counter()
         p = self.problem
         target = (Control.penetration_of(p.penetration) if p.penetration is not None
@@ -119,7 +129,17 @@ class Solve:
             out = self.path.approach(target)
             if target.is_load and out.outcome is Outcome.CONVERGED and adhesive:
                 out = self.path.stable_under_load(out, target)
-        return self.assemble(out, target, want_fields, time.perf_counter() - t0)
+        found = (estimate(lambda disc: Solve(attrs.evolve(p, discretization=disc), self.prep),
+                          p.discretization, self.prep, self.spec, out, target)
+                 if estimate_error and out.outcome is Outcome.CONVERGED else None)
+        if found is not None:
+            self.log.event(f"error estimate {found.error:.2g} (Ã {found.area:.2g}, μ "
+                           f"{found.friction:.2g}) from coarser meshes"
+                           + (f"; {found.message}" if found.message else ""))
+        result = self.assemble(out, target, want_fields, time.perf_counter() - t0)
+        if found is not None:
+            result.extras.update(error_estimate=found.error, **found.extras())
+        return result
 
     def assemble(self, out: State, target: Control, want_fields: bool,
                  elapsed: float) -> ContactResult:

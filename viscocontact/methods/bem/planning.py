@@ -176,3 +176,21 @@ def bem_steps(problem, prepared) -> tuple:
                                 else "virtual edge advance"),
                       reason="tables depend on rheology and ζ only")]
     return tuple(steps)
+
+
+def estimate_step(problem, prepared) -> PlanStep:
+    """The error estimate's coarse solves (:mod:`~viscocontact.methods.bem.estimate`)."""
+    from .estimate import coarser_zones, fewer_elements
+
+    disc = problem.discretization
+    spec = mesh_spec(disc, prepared.kernel, problem.adhesion)
+    zones = ""
+    if spec.smallest is not None:
+        coarse = coarser_zones(disc)
+        zones = (f"; and with edge zones twice as coarse (grading {coarse.grading:g}, "
+                 f"edge_resolution {coarse.edge_resolution:g})")
+    return PlanStep(stage="estimate",
+                    choice=f"solved again from the converged edges with "
+                           f"{fewer_elements(disc).elements} elements per contact{zones}",
+                    reason="the change of Ã and μ, by Richardson's rule (order 1 for the "
+                           "elements, 2 for the zones), is the error estimate")
