@@ -55,6 +55,8 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree
 _EXPORTS: dict[str, tuple[str, str]] = {
     "Scene": ("scene", "Scene"),
     "Load": ("scene", "Load"),
+    "ArealScene": ("areal.scene", "ArealScene"),
+    "read_scene": ("scene", "read_scene"),
     "ContactProblem": ("problem", "ContactProblem"),
     "Discretization": ("problem", "Discretization"),
     "ContactResult": ("result", "ContactResult"),
@@ -115,18 +117,31 @@ def solve(scene, *, initial=None, fields: bool = False, raise_on_failure: bool =
 
     from .deadline import deadline
     from .errors import ValidationError
+    from .areal.scene import ArealScene
     from .problem import ContactProblem
-    from .scene import Scene
+    from .scene import Scene, read_scene, scene_from_dict
 
     if isinstance(scene, os.PathLike):
-        scene = Scene.from_toml(Path(scene))
+        scene = read_scene(Path(scene))
     elif isinstance(scene, str):
-        scene = Scene.from_toml(scene)
+        scene = read_scene(scene)
     elif isinstance(scene, Mapping):
-        scene = Scene.from_dict(scene)
-    elif not isinstance(scene, Scene):
-        raise ValidationError("scene", scene, "a Scene, a scene file (path or TOML text) or a "
-                                              "scene table")
+        scene = scene_from_dict(scene)
+    elif not isinstance(scene, (Scene, ArealScene)):
+        raise ValidationError("scene", scene, "a Scene, an ArealScene, a scene file (path or "
+                                              "TOML text) or a scene table")
+    if isinstance(scene, ArealScene):
+        if initial is not None or options:
+            raise ValidationError("initial" if initial is not None else next(iter(options)),
+                                  "(given)", "no value for an areal scene (its options are its "
+                                             "[method]'s)")
+        with deadline(time_limit):
+            result = scene.solve(fields=fields)
+        if raise_on_failure and not result.converged:
+            from .errors import ConvergenceError
+
+            raise ConvergenceError(result.message, result)
+        return result
     problem = ContactProblem.from_scene(scene, **options)
     with deadline(time_limit):
         return problem.solve(initial=initial, fields=fields, raise_on_failure=raise_on_failure)

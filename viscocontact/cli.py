@@ -11,6 +11,7 @@ output piped into a reader that stops early (``| head``) ends quietly with 141.
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import tomllib
 import warnings
@@ -48,12 +49,17 @@ def _run_describe(args: argparse.Namespace) -> int:
     from ._json import dumps
     from .errors import ModelValidityWarning
     from .groups import dimensionless_groups
-    from .scene import Scene
+    from .scene import Scene, read_scene
 
     with warnings.catch_warnings():     # listed below, with the groups they come from
         warnings.simplefilter("ignore", ModelValidityWarning)
-        scene = Scene.from_toml(_path(args.scene))
-    groups = dimensionless_groups(scene)
+        scene = read_scene(_path(args.scene))
+    if isinstance(scene, Scene):
+        groups = dimensionless_groups(scene)
+    else:
+        from .areal.report import areal_groups
+
+        groups = areal_groups(scene)
     for message in groups["warnings"]:
         print(f"{_PROG} describe: warning: {message}", file=sys.stderr)
     if args.json:
@@ -156,9 +162,11 @@ def _configure_solve(parser: argparse.ArgumentParser) -> None:
 def _run_solve(args: argparse.Namespace) -> int:
     """Solve one scene; exit status 1 when the solve does not converge."""
     from .problem import ContactProblem, Discretization
-    from .scene import Scene
+    from .scene import Scene, read_scene
 
-    scene = Scene.from_toml(_path(args.scene))
+    scene = read_scene(_path(args.scene))
+    if not isinstance(scene, Scene):
+        return _solve_areal(args, scene)
     options = {}
     disc = _discretization(args)
     if disc is not None:
@@ -194,6 +202,42 @@ def _run_solve(args: argparse.Namespace) -> int:
                 print(f"{key:<18} {_format_value(value)}")
         for key, value in (si or {}).items():
             print(f"{'si.' + key:<21} {_format_value(value)} {_SI_UNITS[key]}".rstrip())
+    if not result.converged:
+        print(f"viscocontact solve: not converged: {result.message}", file=sys.stderr)
+        return 1
+    return 0
+
+
+def _solve_areal(args: argparse.Namespace, scene) -> int:
+    """``solve`` of an areal scene: the plan (``--explain``) or the result with its areal
+    quantities (:func:`~viscocontact.areal.report.areal_quantities`)."""
+    from ._json import dumps
+    from .areal.report import areal_fields, areal_quantities
+
+    for option in ("elements", "interior_resolution", "kernel_tolerance"):
+        if getattr(args, option) is not None:
+            raise ValidationError(f"--{option.replace('_', '-')}", getattr(args, option),
+                                  "no value for an areal scene (its grid is surface.grid, its "
+                                  "options [method]'s)")
+    if args.si:
+        raise ValidationError("--si", True, "no value for an areal scene (its results are "
+                                            "given in the dimensionless groups)")
+    if args.explain:
+        plan = scene.plan()
+        print(dumps(plan.to_dict(), ensure_ascii=False, indent=2) if args.json else plan)
+        return 0
+    result = scene.solve(fields=True)
+    quantities = areal_quantities(result)
+    if args.json:
+        out = {**result.to_dict(), **quantities,
+               "patch_areas": json.loads(quantities["patch_areas"])}
+        if args.fields:
+            out["fields"] = {k: v.tolist() for k, v in (areal_fields(result) or {}).items()}
+        print(dumps(out, ensure_ascii=False))
+    else:
+        for key, value in {**result.to_dict(), **quantities}.items():
+            if key not in ("edges", "edge_terms", "patch_areas"):
+                print(f"{key:<20} {_format_value(value)}")
     if not result.converged:
         print(f"viscocontact solve: not converged: {result.message}", file=sys.stderr)
         return 1
@@ -299,10 +343,10 @@ def _run_study_file(args, kind: str, build) -> int:
         with kept_on_interrupt(kind, out):
             data = resume(out, **options)
     else:
-        from .scene import Scene
+        from .scene import read_scene
 
         scene_path = _path(args.scene)
-        study = build(Scene.from_toml(scene_path))
+        study = build(read_scene(scene_path))
         out = Path(args.out) if args.out else Path(f"{scene_path.stem}_{kind}.h5")
         with kept_on_interrupt(kind, out):
             data = run(study, out, resume=args.resume, overwrite=args.force, **options)
@@ -325,9 +369,11 @@ def _report(data) -> int:
         failed = int((~p["converged"]).sum())
         axes = data.axes()
         control = "p" if data.study.control == "mean_pressure" else "Delta"
-        print(f"{'variant':<13} {control:>8} {'zeta':>10} {'area':>10} {'mu/sqrt(m2)':>12} "
+        names = ("area_fraction", "friction") if data.areal else ("area", "reduced_friction")
+        heads = ("A/A0", "mu") if data.areal else ("area", "mu/sqrt(m2)")
+        print(f"{'variant':<13} {control:>8} {'zeta':>10} {heads[0]:>10} {heads[1]:>12} "
               f"{'n':>3}")
-        area, fric = data.band("area"), data.band("reduced_friction")
+        area, fric = data.band(names[0]), data.band(names[1])
         for iv, variant in enumerate(axes["variant"]):
             for il, load in enumerate(axes["load"]):
                 for iz, zeta in enumerate(axes["zeta"]):
@@ -433,6 +479,11 @@ def _run_cycle(args: argparse.Namespace) -> int:
     from .studies.base import parse_numbers
 
     def build(scene):
+        from .scene import Scene
+
+        if not isinstance(scene, Scene):
+            raise ValidationError("SCENE.toml", args.scene, "a scene with a [profile]: cycles "
+                                                            "of areal scenes are not available")
         for name in ("max_penetration", "step"):
             if getattr(args, name) is None:
                 raise ValidationError(f"--{name.replace('_', '-')}", None, "a value (required)")
