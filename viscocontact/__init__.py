@@ -56,7 +56,7 @@ _EXPORTS: dict[str, tuple[str, str]] = {
     "Scene": ("scene", "Scene"),
     "Load": ("scene", "Load"),
     "ArealScene": ("areal.scene", "ArealScene"),
-    "read_scene": ("scene", "read_scene"),
+    "read_scene": ("read", "read_scene"),
     "ContactProblem": ("problem", "ContactProblem"),
     "Discretization": ("problem", "Discretization"),
     "ContactResult": ("result", "ContactResult"),
@@ -84,7 +84,7 @@ _EXPORTS: dict[str, tuple[str, str]] = {
 _SUBMODULES = frozenset({
     "adhesion", "contact", "deadline", "errors", "groups", "kernels", "methods", "plan", "plots",
     "problem", "profiles", "reference", "result", "rheology", "scene", "solvers", "studies",
-    "study", "testing", "theories", "units", "defaults", "data"})
+    "study", "testing", "theories", "units", "defaults", "data", "areal", "read"})
 
 __all__ = sorted([*_EXPORTS, "solve", "__version__"])
 
@@ -119,7 +119,8 @@ def solve(scene, *, initial=None, fields: bool = False, raise_on_failure: bool =
     from .errors import ValidationError
     from .areal.scene import ArealScene
     from .problem import ContactProblem
-    from .scene import Scene, read_scene, scene_from_dict
+    from .read import read_scene, scene_from_dict
+    from .scene import Scene
 
     if isinstance(scene, os.PathLike):
         scene = read_scene(Path(scene))

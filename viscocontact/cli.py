@@ -49,7 +49,8 @@ def _run_describe(args: argparse.Namespace) -> int:
     from ._json import dumps
     from .errors import ModelValidityWarning
     from .groups import dimensionless_groups
-    from .scene import Scene, read_scene
+    from .read import read_scene
+    from .scene import Scene
 
     with warnings.catch_warnings():     # listed below, with the groups they come from
         warnings.simplefilter("ignore", ModelValidityWarning)
@@ -162,7 +163,8 @@ def _configure_solve(parser: argparse.ArgumentParser) -> None:
 def _run_solve(args: argparse.Namespace) -> int:
     """Solve one scene; exit status 1 when the solve does not converge."""
     from .problem import ContactProblem, Discretization
-    from .scene import Scene, read_scene
+    from .read import read_scene
+    from .scene import Scene
 
     scene = read_scene(_path(args.scene))
     if not isinstance(scene, Scene):
@@ -343,7 +345,7 @@ def _run_study_file(args, kind: str, build) -> int:
         with kept_on_interrupt(kind, out):
             data = resume(out, **options)
     else:
-        from .scene import read_scene
+        from .read import read_scene
 
         scene_path = _path(args.scene)
         study = build(read_scene(scene_path))

@@ -39,7 +39,7 @@ from .units import (COHESIVE_KEYS, COHESIVE_KIND, PHYSICAL_KEYS, RANGE_MAX, _che
                     _check_physical, _disagree, _fill, _no_target, _none_adhesion,
                     physical_targets)
 
-__all__ = ["Scene", "read_scene", "scene_from_dict", "scene_text", "Load", "ComponentSpec", "build_component", "dump_component", "kind_of",
+__all__ = ["Scene", "scene_text", "Load", "ComponentSpec", "build_component", "dump_component", "kind_of",
            "physical_targets", "dimensionless_groups", "tabor_parameter", "SECTIONS",
            "COMPONENT_SECTIONS", "TOP_LEVEL_KEYS", "PHYSICAL_KEYS", "COHESIVE_KEYS",
            "COHESIVE_KIND", "RANGE_MAX", "TABOR_SHORT_RANGE", "DEFAULT_EQUILIBRIUM_DISTANCE"]
@@ -343,28 +343,6 @@ def scene_text(source: str | Path) -> str:
     if "\n" in source or ("=" in source and not Path(source).is_file()):
         return source
     return scene_path(source).read_text(encoding="utf-8")
-
-
-def scene_from_dict(data: Mapping[str, Any]):
-    """A :class:`Scene` from a table with ``[profile]``, or an
-    :class:`~viscocontact.areal.scene.ArealScene` from one with ``[surface]``."""
-    if isinstance(data, Mapping) and "surface" in data:
-        from .areal.scene import ArealScene
-
-        return ArealScene.from_dict(data)
-    return Scene.from_dict(data)
-
-
-def read_scene(source: str | Path):
-    """The scene of a TOML file or text: a :class:`Scene` (``[profile]``) or an
-    :class:`~viscocontact.areal.scene.ArealScene` (``[surface]``).
-
-    Examples
-    --------
-    >>> type(read_scene("examples/scenes/sinusoid.toml")).__name__
-    'Scene'
-    """
-    return scene_from_dict(tomllib.loads(scene_text(source)))
 
 
 def _from_dict(data: Mapping[str, Any]) -> Scene:

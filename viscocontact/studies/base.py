@@ -116,7 +116,7 @@ def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
 
 def check_scene(scene: Mapping[str, Any], what: str):
     """Build a scene dict (raising the scene's own ValidationError, with ``what`` appended)."""
-    from ..scene import scene_from_dict
+    from ..read import scene_from_dict
 
     try:
         return scene_from_dict(scene)

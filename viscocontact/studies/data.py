@@ -134,7 +134,7 @@ class StudyData:
     def scene(self):
         """The base :class:`~viscocontact.scene.Scene` (an
         :class:`~viscocontact.areal.scene.ArealScene` for a study of an areal scene)."""
-        from ..scene import read_scene
+        from ..read import read_scene
 
         return read_scene(self.scene_toml)
 

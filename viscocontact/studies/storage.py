@@ -439,7 +439,7 @@ def records(points: Mapping[str, np.ndarray]) -> dict[int, list[dict[str, Any]]]
 
 def study_from_header(header: Mapping[str, Any]):
     """The :class:`~viscocontact.studies.base.Study` a study file holds."""
-    from ..scene import read_scene
+    from ..read import read_scene
     from .base import Study
     from .cycle import Cycle
     from .sweep import Sweep
@@ -454,7 +454,7 @@ def study_from_header(header: Mapping[str, Any]):
 def _same_scene(stored: str, scene) -> bool:
     """Whether the stored scene text, read by this version, is ``scene``: a file written before
     a component gained a parameter (its default then applies) holds the same scene."""
-    from ..scene import read_scene
+    from ..read import read_scene
 
     try:
         return read_scene(stored).to_toml() == scene.to_toml()

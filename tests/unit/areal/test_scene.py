@@ -14,7 +14,8 @@ from viscocontact.areal.scene import ArealScene
 from viscocontact.areal.surfaces import SelfAffineSurface
 from viscocontact.errors import ValidationError
 from viscocontact.rheology import StandardLinearSolid
-from viscocontact.scene import Scene, read_scene
+from viscocontact.read import read_scene
+from viscocontact.scene import Scene
 
 pytestmark = pytest.mark.usefixtures("surface_registry")
 
