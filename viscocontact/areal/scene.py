@@ -87,6 +87,11 @@ def _check_poisson(inst, attribute, value):
     _check_number("poisson", value, lo=-1.0, hi=0.5, lo_open=True)
 
 
+def _is_surface(inst, attribute, value):
+    if not isinstance(value, Surface):
+        raise ValidationError("ArealScene.surface", value, "a Surface (viscocontact.surfaces)")
+
+
 def _check_method(inst, attribute, value):
     if not isinstance(value, ArealSpectral):
         raise ValidationError("ArealScene.method", value, "an ArealSpectral")
@@ -132,7 +137,7 @@ class ArealScene:
     ((32, 32), True)
     """
 
-    surface: Surface = attrs.field(validator=attrs.validators.instance_of(Surface))
+    surface: Surface = attrs.field(validator=_is_surface)
     rheology: Any = attrs.field(validator=_component_of("rheologies"))
     kernel: Any = attrs.field(factory=_default_kernel, validator=_component_of("kernels"))
     adhesion: Any = attrs.field(factory=_default_adhesion, validator=_component_of("adhesion"))
