@@ -171,3 +171,14 @@ def test_the_plan_says_grid_memory_time_and_the_cohesive_zone():
     assert "32×32 cells fit" in plan["memory check"].reason
     with pytest.raises(ValidationError, match="max_memory"):
         ArealScene.from_dict(refused).solve()
+
+
+def test_vc_solve_takes_an_areal_scene():
+    import viscocontact as vc
+
+    result = vc.solve(SMALL)
+    assert result.method == "areal-spectral"
+    assert result.extras["area_fraction"] == ArealScene.from_toml(SMALL).solve().extras[
+        "area_fraction"]
+    with pytest.raises(ValidationError, match="discretization"):
+        vc.solve(SMALL, discretization=None)
