@@ -151,6 +151,9 @@ def _configure_solve(parser: argparse.ArgumentParser) -> None:
                              "table")
     parser.add_argument("--elements", type=int, default=None, help="elements per contact")
     _add_interior_resolution(parser)
+    parser.add_argument("--plot", metavar="FILE.png", default=None,
+                        help="also draw the solution: pressure and gap against x̃ (a profile), "
+                             "the contact map and the pressure field (a surface)")
     parser.add_argument("--explain", action="store_true",
                         help="print the solve plan (what is computed, what is skipped and why) "
                              "and exit without solving")
@@ -189,7 +192,12 @@ def _run_solve(args: argparse.Namespace) -> int:
         from .units import require_scale
 
         require_scale(scene)                # a scene without an SI scale: said before solving
-    result = problem.solve(fields=args.fields)
+    _check_plot(args.plot)
+    result = problem.solve(fields=args.fields or args.plot is not None)
+    if args.plot is not None:
+        from .plots import plot_solution_fields
+
+        print(f"wrote {plot_solution_fields(result, args.plot, scene=scene)}", file=sys.stderr)
     si = _si(result, scene) if args.si else None
     if args.json:
         if si is None:
@@ -228,8 +236,13 @@ def _solve_areal(args: argparse.Namespace, scene) -> int:
         plan = scene.plan()
         print(dumps(plan.to_dict(), ensure_ascii=False, indent=2) if args.json else plan)
         return 0
+    _check_plot(args.plot)
     result = scene.solve(fields=True)
     quantities = areal_quantities(result)
+    if args.plot is not None:
+        from .areal.plots import plot_contact
+
+        print(f"wrote {plot_contact(result, args.plot)}", file=sys.stderr)
     if args.json:
         out = {**result.to_dict(), **quantities,
                "patch_areas": json.loads(quantities["patch_areas"])}
@@ -244,6 +257,17 @@ def _solve_areal(args: argparse.Namespace, scene) -> int:
         print(f"viscocontact solve: not converged: {result.message}", file=sys.stderr)
         return 1
     return 0
+
+
+def _check_plot(name: str | None) -> None:
+    """``--plot FILE.png``: a file name in an existing folder (said before solving)."""
+    from pathlib import Path
+
+    if name is None:
+        return
+    path = Path(name)
+    if path.is_dir() or not path.parent.is_dir():
+        raise ValidationError("--plot", name, "a PNG file name in an existing folder")
 
 
 #: SI units of ``solve --si`` (:class:`~viscocontact.units.PhysicalResult`).

@@ -85,6 +85,16 @@ def test_solve_text_and_fields(scene, capsys):
     assert np.shape(fields["pressure"]) == (64, 64) and len(fields["x"]) == 64
 
 
+def test_solve_plot_draws_the_contact_map(scene, tmp_path, capsys):
+    scene.write_text(DRY)
+    png = tmp_path / "contact.png"
+    assert main(["solve", str(scene), "--json", "--plot", str(png)]) == 0
+    assert json.loads(capsys.readouterr().out)["converged"]        # stdout stays JSON
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert main(["solve", str(scene), "--plot", str(tmp_path / "no" / "c.png")]) == 2
+    assert "--plot" in capsys.readouterr().err
+
+
 def test_explain_prints_the_plan(scene, capsys):
     assert main(["solve", str(scene), "--explain"]) == 0
     text = capsys.readouterr().out
@@ -146,6 +156,8 @@ def test_sweep_over_realizations_and_its_file(scene, tmp_path, capsys):
             assert data.table("friction")[0, 0, iseed, iz] == direct.friction
     fields = data.fields(0)
     assert fields["pressure"].shape == (64, 64) and fields["y"].shape == (64,)
+    assert main(["plot", str(out), "--out", str(tmp_path / "figures")]) == 0
+    assert (tmp_path / "figures" / "areal_sweep_area.png").stat().st_size > 10_000
     with h5py.File(out) as f:       # x and y are the dimension scales of the 2D fields
         group = f["fields/000000"]
         assert group["pressure"].dims[0][0].name.endswith("/y")
