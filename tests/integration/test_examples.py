@@ -29,6 +29,7 @@ def test_the_areal_science_script_writes_its_study_numbers_and_figures(tmp_path,
     script.SEEDS, script.ZETAS, script.CHECK_ZETAS = (0, 1), (0.1, 10.0), (10.0,)
     script.GRID, script.FINE = 32, 64
     script.ADHESION = {"kind": "none"}
+    script.LOWEST_SEEDS, script.LOWEST_ZETAS = (0,), (10.0,)
     numbers = script.main(["--out", str(tmp_path)])
     for name in ("areal_science.h5", "areal_1d.json", "areal_science.json",
                  "areal_science.png", "areal_contact_map.png"):
@@ -39,3 +40,5 @@ def test_the_areal_science_script_writes_its_study_numbers_and_figures(tmp_path,
     assert numbers["adhesionless area_fraction"][1] < numbers["adhesionless area_fraction"][0]
     assert numbers["Persson areal area_fraction"][1] < numbers["Persson areal area_fraction"][0]
     assert len(numbers["grid_check"]) == 1
+    assert numbers["lowest_check"]["row share, lowest 4"] < numbers["lowest_check"][
+        "row share, lowest 1"]
