@@ -17,7 +17,8 @@ The names below are imported on first use, so ``import viscocontact`` loads neit
 scipy, matplotlib nor h5py:
 
 * scenes and solves: :class:`Scene` (with its :class:`Load`; ``scene.replace(zeta=...)``
-  derives a variant), :func:`solve`, :class:`ContactProblem`,
+  derives a variant), :class:`ArealScene` (a ``[surface]`` scene), :func:`read_scene` (either
+  kind from a file), :func:`solve`, :class:`ContactProblem`,
   :class:`Discretization`, :class:`Tolerances`, :class:`ContactResult` (``result.physical(scene)``:
   the :class:`PhysicalResult` in SI units), :class:`SolveStatus`,
   :func:`dimensionless_groups` (a time limit for any block: ``vc.deadline.deadline``);
@@ -95,9 +96,11 @@ def solve(scene, *, initial=None, fields: bool = False, raise_on_failure: bool =
 
     Parameters
     ----------
-    scene : Scene, str, path or mapping
-        A :class:`~viscocontact.scene.Scene`, a scene file (TOML path or text) or a scene table
-        (the dict :meth:`Scene.to_dict` writes).
+    scene : Scene, ArealScene, str, path or mapping
+        A :class:`~viscocontact.scene.Scene`, an :class:`~viscocontact.areal.scene.ArealScene`,
+        a scene file (TOML path or text, with a ``[profile]`` or a ``[surface]``) or a scene
+        table (the dict ``to_dict`` writes). An areal scene takes no ``initial`` nor
+        ``options`` (its grid and method options are the scene's).
     initial : ContactResult or array of edges, optional
         Contact set to start from; default the approach path from first touch.
     fields : bool
