@@ -201,3 +201,22 @@ def test_a_sweep_refuses_what_an_areal_scene_cannot_take(scene, capsys):
     assert "sweep.history" in capsys.readouterr().err
     assert main(["sweep", str(scene), "--zetas", "0.1,10", "--elements", "16", "--quiet"]) == 2
     assert "sweep.discretization" in capsys.readouterr().err
+
+
+def _installed_surfaces() -> bool:
+    from viscocontact import _registry
+
+    return bool(_registry.REGISTRIES["surfaces"].names())
+
+
+@pytest.mark.skipif(not _installed_surfaces(),
+                    reason="worker processes read the installed entry points, and the installed "
+                           "metadata has no viscocontact.surfaces group (reinstall the checkout)")
+def test_an_areal_study_in_worker_processes_gives_the_serial_points(tmp_path):
+    sweep = Sweep(scene=ArealScene.from_toml(DRY), zetas=[0.1, 10.0], seeds=[0, 1], pair=False)
+    serial = run(sweep, tmp_path / "serial.h5", progress=None)
+    pooled = run(sweep, tmp_path / "pooled.h5", workers=2, progress=None)
+    a, b = serial.points, pooled.points
+    order_a, order_b = (np.lexsort((p["step"], p["chain"])) for p in (a, b))
+    for key in ("area_fraction", "friction", "patch_areas", "mean_gap", "dissipated_power"):
+        assert np.array_equal(a[key][order_a], b[key][order_b]), key
