@@ -243,6 +243,9 @@ def _solve_areal(args: argparse.Namespace, scene) -> int:
         from .areal.plots import plot_contact
 
         print(f"wrote {plot_contact(result, args.plot)}", file=sys.stderr)
+    for event in result.extras.get("events", []):
+        if "under-resolved" in event:       # said at every solve, as --explain says it
+            print(f"viscocontact solve: warning: {event}", file=sys.stderr)
     if args.json:
         out = {**result.to_dict(), **quantities,
                "patch_areas": json.loads(quantities["patch_areas"])}

@@ -106,6 +106,8 @@ def test_explain_prints_the_plan(scene, capsys):
     assert main(["solve", str(coarse), "--explain", "--json"]) == 0
     steps = {s["stage"]: s for s in json.loads(capsys.readouterr().out)}
     assert "UNDER-RESOLVED" in steps["adhesion"]["reason"]
+    assert main(["solve", str(coarse), "--json"]) in (0, 1)    # converged or not: the warning
+    assert "warning: the cohesive zone q0a0 = 4.5 spans 22.9 cells" in capsys.readouterr().err
 
 
 def test_a_scene_beyond_its_memory_is_refused_with_the_figure(scene, capsys):
