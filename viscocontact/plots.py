@@ -141,7 +141,7 @@ def _xscale(ax, zetas) -> None:
 
 
 def plot_sweep(data, out: Path, prefix: str) -> list[Path]:
-    """``<prefix>_area.png`` and ``<prefix>_friction.png`` of a sweep (an areal one: A/A0 and μ)."""
+    """``<prefix>_area.png`` and ``<prefix>_friction.png`` of a sweep (areal: A/A0 and μ)."""
     axes = data.axes()
     zetas = np.asarray(axes["zeta"])
     control = "p̃∞" if data.study.control == "mean_pressure" else "Δ̃"

@@ -39,7 +39,8 @@ from .units import (COHESIVE_KEYS, COHESIVE_KIND, PHYSICAL_KEYS, RANGE_MAX, _che
                     _check_physical, _disagree, _fill, _no_target, _none_adhesion,
                     physical_targets)
 
-__all__ = ["Scene", "scene_text", "Load", "ComponentSpec", "build_component", "dump_component", "kind_of",
+__all__ = ["Scene", "scene_text", "Load", "ComponentSpec",
+           "build_component", "dump_component", "kind_of",
            "physical_targets", "dimensionless_groups", "tabor_parameter", "SECTIONS",
            "COMPONENT_SECTIONS", "TOP_LEVEL_KEYS", "PHYSICAL_KEYS", "COHESIVE_KEYS",
            "COHESIVE_KIND", "RANGE_MAX", "TABOR_SHORT_RANGE", "DEFAULT_EQUILIBRIUM_DISTANCE"]

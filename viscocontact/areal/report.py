@@ -77,7 +77,8 @@ def areal_groups(scene) -> dict[str, Any]:
     (``viscocontact describe``): the component kinds, the grid, ``amplitude`` Λ̃ (its highest
     point on the grid), ``rms``, ``rms_slope``, ``m2x``, ``zeta``, ``direction``, ``beta``,
     ``poisson``, the load, ``gamma`` and with a cohesive law ``cohesive_stress`` σ̃0,
-    ``range_ratio`` η (the range over Λ), ``quasi_static_zone`` q0a0 and ``cells_per_zone``; ``physical`` and ``warnings`` (an under-resolved zone)."""
+    ``range_ratio`` η (the range over Λ), ``quasi_static_zone`` q0a0 and ``cells_per_zone``;
+    ``physical`` and ``warnings`` (an under-resolved zone)."""
     from ..components import _param, kind_of
     from ..methods.spectral.cohesive import CELLS_PER_ZONE, zone_cells
     from .surfaces import sample_statistics
