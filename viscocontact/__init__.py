@@ -17,7 +17,8 @@ The names below are imported on first use, so ``import viscocontact`` loads neit
 scipy, matplotlib nor h5py:
 
 * scenes and solves: :class:`Scene` (with its :class:`Load`; ``scene.replace(zeta=...)``
-  derives a variant), :func:`solve`, :class:`ContactProblem`,
+  derives a variant), :class:`ArealScene` (a ``[surface]`` scene), :func:`read_scene` (either
+  kind from a file), :func:`solve`, :class:`ContactProblem`,
   :class:`Discretization`, :class:`Tolerances`, :class:`ContactResult` (``result.physical(scene)``:
   the :class:`PhysicalResult` in SI units), :class:`SolveStatus`,
   :func:`dimensionless_groups` (a time limit for any block: ``vc.deadline.deadline``);
@@ -55,6 +56,8 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree
 _EXPORTS: dict[str, tuple[str, str]] = {
     "Scene": ("scene", "Scene"),
     "Load": ("scene", "Load"),
+    "ArealScene": ("areal.scene", "ArealScene"),
+    "read_scene": ("read", "read_scene"),
     "ContactProblem": ("problem", "ContactProblem"),
     "Discretization": ("problem", "Discretization"),
     "ContactResult": ("result", "ContactResult"),
@@ -82,7 +85,7 @@ _EXPORTS: dict[str, tuple[str, str]] = {
 _SUBMODULES = frozenset({
     "adhesion", "contact", "deadline", "errors", "groups", "kernels", "methods", "plan", "plots",
     "problem", "profiles", "reference", "result", "rheology", "scene", "solvers", "studies",
-    "study", "testing", "theories", "units", "defaults", "data"})
+    "study", "testing", "theories", "units", "defaults", "data", "areal", "read"})
 
 __all__ = sorted([*_EXPORTS, "solve", "__version__"])
 
@@ -93,9 +96,11 @@ def solve(scene, *, initial=None, fields: bool = False, raise_on_failure: bool =
 
     Parameters
     ----------
-    scene : Scene, str, path or mapping
-        A :class:`~viscocontact.scene.Scene`, a scene file (TOML path or text) or a scene table
-        (the dict :meth:`Scene.to_dict` writes).
+    scene : Scene, ArealScene, str, path or mapping
+        A :class:`~viscocontact.scene.Scene`, an :class:`~viscocontact.areal.scene.ArealScene`,
+        a scene file (TOML path or text, with a ``[profile]`` or a ``[surface]``) or a scene
+        table (the dict ``to_dict`` writes). An areal scene takes no ``initial`` nor
+        ``options`` (its grid and method options are the scene's).
     initial : ContactResult or array of edges, optional
         Contact set to start from; default the approach path from first touch.
     fields : bool
@@ -115,18 +120,32 @@ def solve(scene, *, initial=None, fields: bool = False, raise_on_failure: bool =
 
     from .deadline import deadline
     from .errors import ValidationError
+    from .areal.scene import ArealScene
     from .problem import ContactProblem
+    from .read import read_scene, scene_from_dict
     from .scene import Scene
 
     if isinstance(scene, os.PathLike):
-        scene = Scene.from_toml(Path(scene))
+        scene = read_scene(Path(scene))
     elif isinstance(scene, str):
-        scene = Scene.from_toml(scene)
+        scene = read_scene(scene)
     elif isinstance(scene, Mapping):
-        scene = Scene.from_dict(scene)
-    elif not isinstance(scene, Scene):
-        raise ValidationError("scene", scene, "a Scene, a scene file (path or TOML text) or a "
-                                              "scene table")
+        scene = scene_from_dict(scene)
+    elif not isinstance(scene, (Scene, ArealScene)):
+        raise ValidationError("scene", scene, "a Scene, an ArealScene, a scene file (path or "
+                                              "TOML text) or a scene table")
+    if isinstance(scene, ArealScene):
+        if initial is not None or options:
+            raise ValidationError("initial" if initial is not None else next(iter(options)),
+                                  "(given)", "no value for an areal scene (its options are its "
+                                             "[method]'s)")
+        with deadline(time_limit):
+            result = scene.solve(fields=fields)
+        if raise_on_failure and not result.converged:
+            from .errors import ConvergenceError
+
+            raise ConvergenceError(result.message, result)
+        return result
     problem = ContactProblem.from_scene(scene, **options)
     with deadline(time_limit):
         return problem.solve(initial=initial, fields=fields, raise_on_failure=raise_on_failure)

@@ -11,6 +11,7 @@ output piped into a reader that stops early (``| head``) ends quietly with 141.
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import tomllib
 import warnings
@@ -48,12 +49,18 @@ def _run_describe(args: argparse.Namespace) -> int:
     from ._json import dumps
     from .errors import ModelValidityWarning
     from .groups import dimensionless_groups
+    from .read import read_scene
     from .scene import Scene
 
     with warnings.catch_warnings():     # listed below, with the groups they come from
         warnings.simplefilter("ignore", ModelValidityWarning)
-        scene = Scene.from_toml(_path(args.scene))
-    groups = dimensionless_groups(scene)
+        scene = read_scene(_path(args.scene))
+    if isinstance(scene, Scene):
+        groups = dimensionless_groups(scene)
+    else:
+        from .areal.report import areal_groups
+
+        groups = areal_groups(scene)
     for message in groups["warnings"]:
         print(f"{_PROG} describe: warning: {message}", file=sys.stderr)
     if args.json:
@@ -144,6 +151,9 @@ def _configure_solve(parser: argparse.ArgumentParser) -> None:
                              "table")
     parser.add_argument("--elements", type=int, default=None, help="elements per contact")
     _add_interior_resolution(parser)
+    parser.add_argument("--plot", metavar="FILE.png", default=None,
+                        help="also draw the solution: pressure and gap against x̃ (a profile), "
+                             "the contact map and the pressure field (a surface)")
     parser.add_argument("--explain", action="store_true",
                         help="print the solve plan (what is computed, what is skipped and why) "
                              "and exit without solving")
@@ -156,9 +166,12 @@ def _configure_solve(parser: argparse.ArgumentParser) -> None:
 def _run_solve(args: argparse.Namespace) -> int:
     """Solve one scene; exit status 1 when the solve does not converge."""
     from .problem import ContactProblem, Discretization
+    from .read import read_scene
     from .scene import Scene
 
-    scene = Scene.from_toml(_path(args.scene))
+    scene = read_scene(_path(args.scene))
+    if not isinstance(scene, Scene):
+        return _solve_areal(args, scene)
     options = {}
     disc = _discretization(args)
     if disc is not None:
@@ -179,7 +192,12 @@ def _run_solve(args: argparse.Namespace) -> int:
         from .units import require_scale
 
         require_scale(scene)                # a scene without an SI scale: said before solving
-    result = problem.solve(fields=args.fields)
+    _check_plot(args.plot)
+    result = problem.solve(fields=args.fields or args.plot is not None)
+    if args.plot is not None:
+        from .plots import plot_solution_fields
+
+        print(f"wrote {plot_solution_fields(result, args.plot, scene=scene)}", file=sys.stderr)
     si = _si(result, scene) if args.si else None
     if args.json:
         if si is None:
@@ -198,6 +216,61 @@ def _run_solve(args: argparse.Namespace) -> int:
         print(f"viscocontact solve: not converged: {result.message}", file=sys.stderr)
         return 1
     return 0
+
+
+def _solve_areal(args: argparse.Namespace, scene) -> int:
+    """``solve`` of an areal scene: the plan (``--explain``) or the result with its areal
+    quantities (:func:`~viscocontact.areal.report.areal_quantities`)."""
+    from ._json import dumps
+    from .areal.report import areal_fields, areal_quantities
+
+    for option in ("elements", "interior_resolution", "kernel_tolerance"):
+        if getattr(args, option) is not None:
+            raise ValidationError(f"--{option.replace('_', '-')}", getattr(args, option),
+                                  "no value for an areal scene (its grid is surface.grid, its "
+                                  "options [method]'s)")
+    if args.si:
+        raise ValidationError("--si", True, "no value for an areal scene (its results are "
+                                            "given in the dimensionless groups)")
+    if args.explain:
+        plan = scene.plan()
+        print(dumps(plan.to_dict(), ensure_ascii=False, indent=2) if args.json else plan)
+        return 0
+    _check_plot(args.plot)
+    result = scene.solve(fields=True)
+    quantities = areal_quantities(result)
+    if args.plot is not None:
+        from .areal.plots import plot_contact
+
+        print(f"wrote {plot_contact(result, args.plot)}", file=sys.stderr)
+    for event in result.extras.get("events", []):
+        if "under-resolved" in event:       # said at every solve, as --explain says it
+            print(f"viscocontact solve: warning: {event}", file=sys.stderr)
+    if args.json:
+        out = {**result.to_dict(), **quantities,
+               "patch_areas": json.loads(quantities["patch_areas"])}
+        if args.fields:
+            out["fields"] = {k: v.tolist() for k, v in (areal_fields(result) or {}).items()}
+        print(dumps(out, ensure_ascii=False))
+    else:
+        for key, value in {**result.to_dict(), **quantities}.items():
+            if key not in ("edges", "edge_terms", "patch_areas"):
+                print(f"{key:<20} {_format_value(value)}")
+    if not result.converged:
+        print(f"viscocontact solve: not converged: {result.message}", file=sys.stderr)
+        return 1
+    return 0
+
+
+def _check_plot(name: str | None) -> None:
+    """``--plot FILE.png``: a file name in an existing folder (said before solving)."""
+    from pathlib import Path
+
+    if name is None:
+        return
+    path = Path(name)
+    if path.is_dir() or not path.parent.is_dir():
+        raise ValidationError("--plot", name, "a PNG file name in an existing folder")
 
 
 #: SI units of ``solve --si`` (:class:`~viscocontact.units.PhysicalResult`).
@@ -299,10 +372,10 @@ def _run_study_file(args, kind: str, build) -> int:
         with kept_on_interrupt(kind, out):
             data = resume(out, **options)
     else:
-        from .scene import Scene
+        from .read import read_scene
 
         scene_path = _path(args.scene)
-        study = build(Scene.from_toml(scene_path))
+        study = build(read_scene(scene_path))
         out = Path(args.out) if args.out else Path(f"{scene_path.stem}_{kind}.h5")
         with kept_on_interrupt(kind, out):
             data = run(study, out, resume=args.resume, overwrite=args.force, **options)
@@ -325,9 +398,11 @@ def _report(data) -> int:
         failed = int((~p["converged"]).sum())
         axes = data.axes()
         control = "p" if data.study.control == "mean_pressure" else "Delta"
-        print(f"{'variant':<13} {control:>8} {'zeta':>10} {'area':>10} {'mu/sqrt(m2)':>12} "
+        names = ("area_fraction", "friction") if data.areal else ("area", "reduced_friction")
+        heads = ("A/A0", "mu") if data.areal else ("area", "mu/sqrt(m2)")
+        print(f"{'variant':<13} {control:>8} {'zeta':>10} {heads[0]:>10} {heads[1]:>12} "
               f"{'n':>3}")
-        area, fric = data.band("area"), data.band("reduced_friction")
+        area, fric = data.band(names[0]), data.band(names[1])
         for iv, variant in enumerate(axes["variant"]):
             for il, load in enumerate(axes["load"]):
                 for iz, zeta in enumerate(axes["zeta"]):
@@ -433,6 +508,11 @@ def _run_cycle(args: argparse.Namespace) -> int:
     from .studies.base import parse_numbers
 
     def build(scene):
+        from .scene import Scene
+
+        if not isinstance(scene, Scene):
+            raise ValidationError("SCENE.toml", args.scene, "a scene with a [profile]: cycles "
+                                                            "of areal scenes are not available")
         for name in ("max_penetration", "step"):
             if getattr(args, name) is None:
                 raise ValidationError(f"--{name.replace('_', '-')}", None, "a value (required)")

@@ -62,7 +62,14 @@ def scene_label(scene) -> str:
     """A one-line description of a scene for a figure: ``β``, the load, ``Γ̃`` when adhesive."""
     from .groups import dimensionless_groups
 
-    g = dimensionless_groups(scene)
+    if hasattr(scene, "surface"):       # an areal scene
+        from .areal.report import areal_groups
+
+        g = areal_groups(scene)
+        g["profile"] = f"{g['surface']} surface, {g['grid']}"
+        g["Gamma"] = g["gamma"] / g["amplitude"]**2
+    else:
+        g = dimensionless_groups(scene)
     load = (f"p̃∞ = {g['mean_pressure']:.3g}" if "mean_pressure" in g
             else f"Δ̃ = {g['penetration']:.3g}")
     parts = [f"{g['profile']}", f"β = {g['beta']:.3g}", load]
@@ -134,14 +141,17 @@ def _xscale(ax, zetas) -> None:
 
 
 def plot_sweep(data, out: Path, prefix: str) -> list[Path]:
-    """``<prefix>_area.png`` and ``<prefix>_friction.png`` of a sweep."""
+    """``<prefix>_area.png`` and ``<prefix>_friction.png`` of a sweep (areal: A/A0 and μ)."""
     axes = data.axes()
     zetas = np.asarray(axes["zeta"])
     control = "p̃∞" if data.study.control == "mean_pressure" else "Δ̃"
     realizations = len(axes["seed"]) > 1
     files = []
-    for key, ylabel, name in (("area", AREA_LABEL, "area"),
-                              ("reduced_friction", "reduced friction μ/√m2", "friction")):
+    quantities = ((("area_fraction", "contact area A/A0", "area"),
+                   ("friction", "friction coefficient μ", "friction")) if data.areal else
+                  (("area", AREA_LABEL, "area"),
+                   ("reduced_friction", "reduced friction μ/√m2", "friction")))
+    for key, ylabel, name in quantities:
         band = data.band(key)
         fig = _figure(figsize=(6.4, 4.2))
         ax = fig.subplots()

@@ -39,7 +39,8 @@ from .units import (COHESIVE_KEYS, COHESIVE_KIND, PHYSICAL_KEYS, RANGE_MAX, _che
                     _check_physical, _disagree, _fill, _no_target, _none_adhesion,
                     physical_targets)
 
-__all__ = ["Scene", "Load", "ComponentSpec", "build_component", "dump_component", "kind_of",
+__all__ = ["Scene", "scene_text", "Load", "ComponentSpec",
+           "build_component", "dump_component", "kind_of",
            "physical_targets", "dimensionless_groups", "tabor_parameter", "SECTIONS",
            "COMPONENT_SECTIONS", "TOP_LEVEL_KEYS", "PHYSICAL_KEYS", "COHESIVE_KEYS",
            "COHESIVE_KIND", "RANGE_MAX", "TABOR_SHORT_RANGE", "DEFAULT_EQUILIBRIUM_DISTANCE"]
@@ -230,15 +231,7 @@ class Scene:
         ``examples/scenes/NAME.toml``, read the copies shipped with the package when no such
         file exists in the working folder.
         """
-        from .data import scene_path
-
-        if isinstance(source, Path):
-            text = scene_path(source).read_text(encoding="utf-8")
-        elif "\n" in source or ("=" in source and not Path(source).is_file()):
-            text = source
-        else:
-            text = scene_path(source).read_text(encoding="utf-8")
-        return cls.from_dict(tomllib.loads(text))
+        return cls.from_dict(tomllib.loads(scene_text(source)))
 
     def to_dict(self) -> dict[str, Any]:
         """The scene table: resolved dimensionless keys, plus ``physical`` when present."""
@@ -342,9 +335,24 @@ def _resolve_poisson(data, physical, kernel_table) -> float:
     return float(candidates[0][1]) if candidates else 0.5
 
 
+def scene_text(source: str | Path) -> str:
+    """The TOML text of a scene given as a path or as text (see :meth:`Scene.from_toml`)."""
+    from .data import scene_path
+
+    if isinstance(source, Path):
+        return scene_path(source).read_text(encoding="utf-8")
+    if "\n" in source or ("=" in source and not Path(source).is_file()):
+        return source
+    return scene_path(source).read_text(encoding="utf-8")
+
+
 def _from_dict(data: Mapping[str, Any]) -> Scene:
     if not isinstance(data, Mapping):
         raise ValidationError("scene", data, "a table of sections")
+    if "surface" in data:
+        raise ValidationError("surface", "[table]", "a [profile] table: a scene with a [surface] "
+                                                    "is areal (read it with read_scene or "
+                                                    "ArealScene.from_dict)")
     for key, value in data.items():
         if isinstance(value, Mapping):
             if key not in SECTIONS:
@@ -380,46 +388,70 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
     profile = build_component("profile", params)
     rheology = build_component("rheology", rheology_table)
 
-    params = kernel_table
-    kind, fields = _kind_class("kernel", params)
-    _fill("kernel", params, physical_targets("kernel", phys, nu), phys, fields, kind)
-    if fields is not None and "poisson" in fields and "poisson" not in params:
-        params["poisson"] = nu
-    kernel = build_component("kernel", params)
-
-    params = adhesion_table
-    kind, fields = _kind_class("adhesion", params)
-    if kind == "none" and any(k in phys for k in ("work_of_adhesion", *COHESIVE_KEYS)):
-        raise _none_adhesion(phys)
-    _check_cohesive(phys, kind, params)
-    targets = physical_targets("adhesion", phys, nu, gamma=params.get("gamma"))
-    _fill("adhesion", params, targets, phys, fields, kind)
-    adhesion = build_component("adhesion", params, lazy=True)
-
+    kernel = _build_kernel(kernel_table, phys, nu)
+    adhesion = _build_adhesion(adhesion_table, phys, nu, lazy=True)
     if solver_table is None:
         solver_table = {"kind": DEFAULT_SOLVER[kind_of("adhesion", adhesion) != "none"]}
     solver = build_component("solver", solver_table, lazy=True)
     method = build_component("method", tables["method"] or {"kind": DEFAULT_METHOD}, lazy=True)
+    load = _build_load(data, phys, nu, lambda: _amplitude(profile))
+    sliding = _build_sliding(data, phys, nu, rheology)
 
+    return Scene(profile=profile, rheology=rheology, kernel=kernel, adhesion=adhesion,
+                 solver=solver, method=method, load=load, zeta=sliding["zeta"], poisson=nu,
+                 physical=physical)
+
+
+def _build_kernel(table: dict[str, Any], phys: Mapping[str, float], nu: float):
+    """The ``[kernel]`` component, its thickness from the physical table and its ν the scene's."""
+    kind, fields = _kind_class("kernel", table)
+    _fill("kernel", table, physical_targets("kernel", phys, nu), phys, fields, kind)
+    if fields is not None and "poisson" in fields and "poisson" not in table:
+        table["poisson"] = nu
+    return build_component("kernel", table)
+
+
+def _build_adhesion(table: dict[str, Any], phys: Mapping[str, float], nu: float, *,
+                    lazy: bool):
+    """The ``[adhesion]`` component, γ̃ and the cohesive range from the physical table."""
+    kind, fields = _kind_class("adhesion", table)
+    if kind == "none" and any(k in phys for k in ("work_of_adhesion", *COHESIVE_KEYS)):
+        raise _none_adhesion(phys)
+    _check_cohesive(phys, kind, table)
+    targets = physical_targets("adhesion", phys, nu, gamma=table.get("gamma"))
+    _fill("adhesion", table, targets, phys, fields, kind)
+    return build_component("adhesion", table, lazy=lazy)
+
+
+def _build_load(data: Mapping[str, Any], phys: Mapping[str, float], nu: float,
+                amplitude) -> Load:
+    """The ``[load]`` table (or the physical load, converted with the amplitude Λ̃ that the
+    callable ``amplitude`` gives)."""
     load_table = _section(data, "load") or {}
     for key in load_table:
         if key not in ("mean_pressure", "penetration"):
             raise ValidationError(f"load.{key}", load_table[key],
                                   "a key of [load]: 'mean_pressure' or 'penetration'"
                                   f"{did_you_mean(key, ('mean_pressure', 'penetration'))}")
-    targets = physical_targets("load", phys, nu, amplitude=lambda: _amplitude(profile))
+    targets = physical_targets("load", phys, nu, amplitude=amplitude)
     _fill("load", load_table, targets, phys, None, "load")
     if not load_table:
         raise ValidationError("load", None, "exactly one of load.mean_pressure and "
                                             "load.penetration (or physical.mean_pressure / "
                                             "physical.penetration)")
-    load = Load(**load_table)
+    return Load(**load_table)
 
+
+def _build_sliding(data: Mapping[str, Any], phys: Mapping[str, float], nu: float, rheology,
+                   keys: tuple[str, ...] = ("zeta",)) -> dict[str, Any]:
+    """The ``[sliding]`` table with its ζ (from the physical table, or 0 for an elastic
+    rheology); ``keys`` are the keys it may hold."""
     sliding = _section(data, "sliding") or {}
     for key in sliding:
-        if key != "zeta":
-            raise ValidationError(f"sliding.{key}", sliding[key], "a key of [sliding]: 'zeta'"
-                                                                  f"{did_you_mean(key, ['zeta'])}")
+        if key not in keys:
+            raise ValidationError(f"sliding.{key}", sliding[key],
+                                  f"a key of [sliding]: {', '.join(repr(k) for k in keys)}"
+                                  f"{did_you_mean(key, keys)}")
     _fill("sliding", sliding, physical_targets("sliding", phys, nu), phys, None, "sliding")
     if "zeta" not in sliding:
         if rheology.modulus_ratio != 1.0:
@@ -427,10 +459,7 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
                                   "a value >= 0 (ζ = q0·V·τ; or physical.velocity and "
                                   "physical.tau): required for a viscoelastic rheology")
         sliding["zeta"] = 0.0
-
-    return Scene(profile=profile, rheology=rheology, kernel=kernel, adhesion=adhesion,
-                 solver=solver, method=method, load=load, zeta=sliding["zeta"], poisson=nu,
-                 physical=physical)
+    return sliding
 
 
 def __getattr__(name: str) -> Any:

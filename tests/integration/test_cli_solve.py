@@ -46,6 +46,15 @@ def test_solve_json(tmp_path, capsys):
     assert min(f["gap"]) > -1e-9
 
 
+def test_solve_plot_draws_pressure_and_gap(tmp_path, capsys):
+    path = tmp_path / "s.toml"
+    path.write_text(SCENE)
+    png = tmp_path / "fields.png"
+    assert main(["solve", str(path), "--json", "--plot", str(png)]) == 0
+    assert "fields" not in json.loads(capsys.readouterr().out)   # drawn, not printed
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and png.stat().st_size > 10_000
+
+
 def test_solve_full_contact_is_a_legitimate_answer(tmp_path, capsys):
     path = tmp_path / "s.toml"
     path.write_text(SCENE.replace("gamma = 1e-4", "gamma = 5e-3").replace("zeta = 1.0", "zeta = 0.1"))

@@ -11,9 +11,10 @@ SCENES = Path(__file__).resolve().parents[2] / "examples" / "scenes"
 
 
 @pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.name)
-def test_every_example_scene_reads_and_writes_back(path):
-    scene = vc.Scene.from_toml(path)
-    assert vc.Scene.from_toml(scene.to_toml()) == scene
+def test_every_example_scene_reads_and_writes_back(path, surface_registry):
+    scene = vc.read_scene(path)
+    assert type(scene).from_toml(scene.to_toml()) == scene
+    assert isinstance(scene, vc.ArealScene) == path.name.startswith("areal_")
 
 
 def test_the_maugis_dugdale_example_lies_between_its_limits():

@@ -78,7 +78,8 @@ class Study(abc.ABC):
 def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
                   control: str | None = None, value: float | None = None,
                   seed: int | None = None, adhesion: Mapping[str, Any] | None = None) -> dict:
-    """A copy of a scene dict with ζ, the load, the profile seed or the adhesion replaced.
+    """A copy of a scene dict with ζ, the load, the profile's (or surface's) seed or the
+    adhesion replaced.
 
     Keys of the ``[physical]`` table that would contradict a replaced value (``velocity`` and
     ``tau`` for ζ,
@@ -91,7 +92,7 @@ def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
     out = {k: (dict(v) if isinstance(v, Mapping) else v) for k, v in base.items()}
     physical = dict(out.get("physical") or {})
     if zeta is not None:
-        out["sliding"] = {"zeta": float(zeta)}
+        out["sliding"] = {**dict(out.get("sliding") or {}), "zeta": float(zeta)}
         physical.pop("velocity", None)
         physical.pop("tau", None)
     if control is not None:
@@ -101,7 +102,7 @@ def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
         physical.pop("mean_pressure", None)
         physical.pop("penetration", None)
     if seed is not None:
-        out["profile"]["seed"] = int(seed)
+        out["surface" if "surface" in out else "profile"]["seed"] = int(seed)
     if adhesion is not None:
         out["adhesion"] = dict(adhesion)
         physical.pop("work_of_adhesion", None)
@@ -115,10 +116,10 @@ def scene_variant(base: Mapping[str, Any], *, zeta: float | None = None,
 
 def check_scene(scene: Mapping[str, Any], what: str):
     """Build a scene dict (raising the scene's own ValidationError, with ``what`` appended)."""
-    from ..scene import Scene
+    from ..read import scene_from_dict
 
     try:
-        return Scene.from_dict(scene)
+        return scene_from_dict(scene)
     except ValidationError as exc:
         raise ValidationError(exc.field, exc.value, f"{exc.allowed} (in {what})") from exc
 

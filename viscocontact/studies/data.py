@@ -132,10 +132,18 @@ class StudyData:
 
     @property
     def scene(self):
-        """The base :class:`~viscocontact.scene.Scene`."""
-        from ..scene import Scene
+        """The base :class:`~viscocontact.scene.Scene` (an
+        :class:`~viscocontact.areal.scene.ArealScene` for a study of an areal scene)."""
+        from ..read import read_scene
 
-        return Scene.from_toml(self.scene_toml)
+        return read_scene(self.scene_toml)
+
+    @property
+    def areal(self) -> bool:
+        """Whether the study's scene is areal (a ``[surface]``)."""
+        import tomllib
+
+        return "surface" in tomllib.loads(self.scene_toml)
 
     @property
     def study(self):

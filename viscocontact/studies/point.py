@@ -42,12 +42,29 @@ COLUMNS: dict[str, str] = {
     # the history that reached the point (studies.history), the events met on the way since the
     # chain's previous point (a JSON list of typed records) and the speed ramp's path state
     "history": "str", "events": "str", "ramp": "str",
+    # areal scenes ([surface]; NaN, -1 or "" for a profile): area fraction, mean gap, dissipated
+    # power, the contact patches (area-weighted means and the size distribution as JSON), the
+    # cells per cohesive zone and the finest grid
+    "area_fraction": "float", "mean_gap": "float", "dissipated_power": "float",
+    "friction_dissipation": "float", "patch_mean_area": "float", "patch_largest_area": "float",
+    "patch_elongation": "float", "patch_orientation": "float", "patch_alignment": "float",
+    "percolating": "int", "cells_per_zone": "float", "grid": "str", "patch_areas": "str",
 }
 
 #: Columns added after the first study-file format, with the value a file written before them
 #: reads as (``""``: the method was not recorded; it was the BEM).
 LATER_COLUMNS: dict[str, Any] = {"method": "", "error_estimate": float("nan"), "history": "",
-                                 "events": "[]", "ramp": ""}
+                                 "events": "[]", "ramp": "",
+                                 **{k: float("nan") for k in (
+                                     "area_fraction", "mean_gap", "dissipated_power",
+                                     "friction_dissipation", "patch_mean_area",
+                                     "patch_largest_area", "patch_elongation",
+                                     "patch_orientation", "patch_alignment", "cells_per_zone")},
+                                 "percolating": -1, "grid": "", "patch_areas": "[]"}
+
+#: The columns only an areal scene fills.
+AREAL_COLUMNS = tuple(k for k in LATER_COLUMNS if k not in ("method", "error_estimate",
+                                                            "history", "events", "ramp"))
 
 #: Columns that depend on the machine's speed, not on the numerics (left out of comparisons).
 TIMING_COLUMNS = ("seconds",)
@@ -141,7 +158,10 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     record = _skeleton(scene, spec)
     try:
         with single_blas_thread(), deadline(time_limit):
-            result, started_from, path = _solve(scene, spec, initial)
+            if "surface" in scene:
+                result, started_from, path = _solve_areal(scene, spec)
+            else:
+                result, started_from, path = _solve(scene, spec, initial)
     except Exception as exc:  # stored with its reason; the study goes on
         record.update(status=ERROR, converged=False, message=f"{type(exc).__name__}: {exc}")
         record["seconds"] = time.perf_counter() - t0
@@ -152,6 +172,11 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     events = path.events or list(result.extras.get("path_events", []))
     record.update(events=json.dumps(events), ramp=path.state)
     out = result.to_dict()
+    if "surface" in scene:
+        from ..areal.report import areal_fields, areal_quantities
+
+        out.update(areal_quantities(result))
+        result = attrs.evolve(result, fields=areal_fields(result) if spec.fields else None)
     for key in COLUMNS:
         if key in out and key not in ("edges", "zeta"):
             record[key] = out[key]
@@ -172,7 +197,8 @@ def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
         "target": float(load[control]), "status": ERROR, "converged": False, "message": "",
         "method": "", "history": str(spec.history.get("name", "")), "events": "[]", "ramp": "",
         "n_contacts": 0, "full_contact": False, "iterations": 0, "function_evaluations": 0,
-        "edges": np.zeros(0), "fields": None}
+        "edges": np.zeros(0), "fields": None,
+        **{k: v for k, v in LATER_COLUMNS.items() if k in AREAL_COLUMNS}}
     for key, kind in COLUMNS.items():
         if kind == "float" and key not in record:
             record[key] = np.nan
@@ -214,6 +240,14 @@ def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
     counts = dict(function_evaluations=result.function_evaluations + fresh.function_evaluations,
                   iterations=result.iterations + fresh.iterations)
     return attrs.evolve(fresh, message=why, **counts), FIRST_TOUCH, path
+
+
+def _solve_areal(scene: Mapping[str, Any], spec: PointSpec):
+    """``(result, started_from, path)`` of an areal point: the scene's own solve (each grid of
+    the ladder from the coarser one's solution), with the fields for the patches."""
+    from ..areal.scene import ArealScene
+
+    return ArealScene.from_dict(scene).solve(fields=True), FIRST_TOUCH, _Path()
 
 
 def _ramped(problem, ramp, spec: PointSpec, path: _Path):

@@ -12,7 +12,8 @@
                          (str columns are UTF-8 strings, ``edges`` variable-length float64)
     /points/row          int64 0 .. n-1, the dimension scale "row" of every column
     /fields/<row>        x, pressure, displacement, gap of point <row> (6 digits; on request;
-                         x is the dimension scale of the others)
+                         x is the dimension scale of the others); an areal point: x, y and
+                         the 2D pressure, displacement, gap of shape (y, x)
 
 The header is written to a temporary file that is renamed into place, so a study file either
 exists complete with its header or not at all. Each finished point is appended by opening the
@@ -50,7 +51,7 @@ from .point import COLUMNS, LATER_COLUMNS
 
 FORMAT = "viscocontact.study"
 FORMAT_VERSION = 1
-FIELD_NAMES = ("x", "pressure", "displacement", "gap")
+FIELD_NAMES = ("x", "y", "pressure", "displacement", "gap")
 ROW = "row"
 
 #: Seconds a write (append) waits for another program to close the file (HDF5 file lock).
@@ -318,15 +319,22 @@ def append(path, record: Mapping[str, Any]) -> int:
 
 
 def _write_fields(group, fields: Mapping[str, Any]) -> None:
-    scale = None
+    """The fields of one point; ``x`` (and for an areal point ``y``) are the dimension scales
+    of the others (a 1D field along ``x``, a 2D one of shape ``(y, x)``)."""
+    scales = {}
     for key in FIELD_NAMES:
-        if key in fields:
-            ds = group.create_dataset(key, data=np.asarray(fields[key], dtype=np.float64))
-            if key == "x":
-                ds.make_scale("x")
-                scale = ds
-            elif scale is not None and ds.shape == scale.shape:
-                ds.dims[0].attach_scale(scale)
+        if key not in fields:
+            continue
+        ds = group.create_dataset(key, data=np.asarray(fields[key], dtype=np.float64))
+        if key in ("x", "y"):
+            ds.make_scale(key)
+            scales[key] = ds
+            continue
+        axes = ("x",) if ds.ndim == 1 else ("y", "x")
+        for dim, name in enumerate(axes):
+            scale = scales.get(name)
+            if scale is not None and ds.ndim == len(axes) and ds.shape[dim] == scale.shape[0]:
+                ds.dims[dim].attach_scale(scale)
 
 
 def set_complete(path, complete: bool) -> None:
@@ -431,7 +439,7 @@ def records(points: Mapping[str, np.ndarray]) -> dict[int, list[dict[str, Any]]]
 
 def study_from_header(header: Mapping[str, Any]):
     """The :class:`~viscocontact.studies.base.Study` a study file holds."""
-    from ..scene import Scene
+    from ..read import read_scene
     from .base import Study
     from .cycle import Cycle
     from .sweep import Sweep
@@ -440,16 +448,16 @@ def study_from_header(header: Mapping[str, Any]):
     if header["kind"] not in kinds:
         raise StudyFileError(f"unknown study kind {header['kind']!r} (expected one of "
                              f"{sorted(kinds)})")
-    return kinds[header["kind"]].from_params(Scene.from_toml(header["scene"]), header["params"])
+    return kinds[header["kind"]].from_params(read_scene(header["scene"]), header["params"])
 
 
 def _same_scene(stored: str, scene) -> bool:
     """Whether the stored scene text, read by this version, is ``scene``: a file written before
     a component gained a parameter (its default then applies) holds the same scene."""
-    from ..scene import Scene
+    from ..read import read_scene
 
     try:
-        return Scene.from_toml(stored).to_toml() == scene.to_toml()
+        return read_scene(stored).to_toml() == scene.to_toml()
     except Exception:       # a scene this version cannot read is not the same scene
         return False
 

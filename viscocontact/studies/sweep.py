@@ -53,6 +53,17 @@ def _seeds(value):
     return None if value is None else int_list("sweep.seeds", list(value))
 
 
+def _scene_kind(inst, attribute, value):
+    from ..areal.scene import ArealScene
+
+    if not isinstance(value, (Scene, ArealScene)):
+        raise ValidationError("sweep.scene", value, "a Scene or an ArealScene")
+
+
+def _is_areal(scene) -> bool:
+    return not isinstance(scene, Scene)
+
+
 def _control(inst, attribute, value):
     if value not in CONTROLS:
         raise ValidationError("sweep.control", value, f"one of {list(CONTROLS)}")
@@ -72,8 +83,11 @@ class Sweep(Study):
 
     Parameters
     ----------
-    scene : Scene
+    scene : Scene or ArealScene
         The base scene; its ζ is replaced by each of ``zetas`` and its load by each of ``loads``.
+        The points of an areal scene (:class:`~viscocontact.areal.scene.ArealScene`) are
+        independent (one chain each, solved in parallel), reached by the approach; its
+        ``discretization`` is its grid.
     zetas : sequence of float
         ζ = q0 V τ >= 0, in the order of continuation (ascending is usual; see :func:`log_zetas`).
     loads : sequence of float, optional
@@ -81,7 +95,7 @@ class Sweep(Study):
     control : {"mean_pressure", "penetration"}, optional
         Load control (p̃∞) or penetration control (Δ̃); default that of the scene.
     seeds : sequence of int, optional
-        Profile seeds, one realization each (the profile kind must take a ``seed``, e.g.
+        Profile (or surface) seeds, one realization each (the kind must take a ``seed``, e.g.
         ``self-affine``); default the scene's profile only.
     pair : bool
         With an adhesive scene, also sweep its adhesionless twin (``adhesion.kind = "none"``, same
@@ -120,7 +134,7 @@ class Sweep(Study):
 
     kind: ClassVar[str] = "sweep"
 
-    scene: Scene = attrs.field(validator=attrs.validators.instance_of(Scene))
+    scene: Any = attrs.field(validator=_scene_kind)
     zetas: tuple = attrs.field(converter=_zetas)
     loads: tuple = attrs.field(converter=_loads, default=attrs.Factory(
         lambda self: (self.scene.load.value,), takes_self=True))
@@ -133,6 +147,14 @@ class Sweep(Study):
     discretization: Discretization | None = attrs.field(default=None, converter=_discretization)
 
     def __attrs_post_init__(self):
+        if _is_areal(self.scene):
+            if isinstance(self.history, SpeedRamp):
+                raise ValidationError("sweep.history", self.history.params(),
+                                      "the approach for an areal scene (each point is solved "
+                                      "on its own)")
+            if self.discretization is not None:
+                raise ValidationError("sweep.discretization", attrs.asdict(self.discretization),
+                                      "None for an areal scene (its grid is surface.grid)")
         if isinstance(self.history, SpeedRamp):
             logs = np.log10(np.maximum(self.zetas, 1e-300))
             steps = np.diff(logs)
@@ -181,8 +203,9 @@ class Sweep(Study):
         for iv, variant in enumerate(self.variants):
             # adhesionless points are unique: one chain of warm starts; approached adhesive
             # points are independent
-            groups = (apart if variant == ADHESIVE and isinstance(self.history, Approach)
-                      else along)
+            # an areal point is solved on its own (its ladder of grids starts afresh)
+            groups = (apart if _is_areal(self.scene) or (
+                variant == ADHESIVE and isinstance(self.history, Approach)) else along)
             for il, load in enumerate(self.loads):
                 for iseed, seed in enumerate(self.seeds or (None,)):
                     for iz0, zetas in groups:

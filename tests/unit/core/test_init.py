@@ -18,6 +18,7 @@ SCENE = WAVY
 
 HOMES = {
     "Scene": "viscocontact.scene", "Load": "viscocontact.scene",
+    "ArealScene": "viscocontact.areal.scene", "read_scene": "viscocontact.read",
     "PhysicalResult": "viscocontact.units", "ContactProblem": "viscocontact.problem",
     "Discretization": "viscocontact.problem", "ContactResult": "viscocontact.result",
     "SolveStatus": "viscocontact.result", "Tolerances": "viscocontact.solvers",

@@ -52,7 +52,7 @@ def surface_parameters(surface: Surface) -> dict[str, Any]:
     """The constructor's parameters as plain data: arrays as lists, a nested profile as its own
     table with its ``kind``, None parameters left out (TOML has no null)."""
     from ...profiles.base import Profile
-    from ...scene import _init_fields, _plain, dump_component
+    from ...components import _init_fields, _plain, dump_component
 
     out: dict[str, Any] = {}
     for key, f in _init_fields(type(surface)).items():
