@@ -6,12 +6,12 @@ equilibria reached, whether they agree, and the residual evaluations each path t
 The points (thesis §4.6 scene: ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=s)``,
 ``StandardLinearSolid(beta=10)``, ``EnergyBalance(gamma=2.387e-7)``, Broyden, default mesh):
 seeds 11-16 at p̃∞ = 0.1, ζ = 1e-2, and seeds 11-13 at (p̃∞, ζ) = (0.3, 1e-2), (0.1, 1) and
-(0.3, 1e-4); 15 in all. Which equilibrium a point reaches from first touch can depend on where
-the path's steps land relative to folds, births and merges (``benchmarks/results`` §11-12), so
-a change of the approach path is judged by the equilibria it reaches as well as by its
-evaluations: a path ``--finer`` times finer is the reference. Each point is solved at the
-default path step and at the finer one, and one line is printed per point; ``--jsonl`` also
-appends one JSON line per solve to FILE. About 10 minutes on one core.
+(0.3, 1e-4); 15 in all. The approach locates its events (folds, births, merges) to a fraction of
+the path step and crosses every fold by the edges' motion, so the equilibrium a point reaches
+should not depend on the step: a path ``--finer`` times finer is the reference, and a change of
+the approach is judged by the equilibria it reaches as well as by its evaluations. Each point
+is solved at the default path step and at the finer one, and one line is printed per point;
+``--jsonl`` also appends one JSON line per solve to FILE. About 40 minutes on one core.
 """
 from __future__ import annotations
 
@@ -27,7 +27,7 @@ POINTS = ([(seed, 1e-2, 0.1) for seed in range(11, 17)]
 SAME = 1e-6
 
 
-def solve(seed: int, zeta: float, load: float, path_step: float, approach: str = "stepped"):
+def solve(seed: int, zeta: float, load: float, path_step: float):
     from viscocontact.adhesion import EnergyBalance
     from viscocontact.problem import ContactProblem, Discretization
     from viscocontact.methods.bem import BEM
@@ -39,8 +39,7 @@ def solve(seed: int, zeta: float, load: float, path_step: float, approach: str =
                              profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
                              rheology=StandardLinearSolid(beta=10.0), solver=Broyden(),
                              adhesion=EnergyBalance(gamma=2.387e-7), mean_pressure=load,
-                             zeta=zeta, discretization=Discretization(path_step=path_step,
-                                                                     approach=approach))
+                             zeta=zeta, discretization=Discretization(path_step=path_step))
     t = time.perf_counter()
     r = problem.solve()
     return {"seed": seed, "zeta": zeta, "load": load, "path_step": path_step,
@@ -54,8 +53,6 @@ def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--finer", type=float, default=4.0, help="path step divisor of the reference")
     ap.add_argument("--points", default=None, help="comma-separated indices into the 15 points")
-    ap.add_argument("--approach", default="stepped", choices=("stepped", "events"),
-                    help="the approach of the BEM (Discretization.approach)")
     ap.add_argument("--jsonl", default=None, help="append one JSON line per solve to this file")
     args = ap.parse_args(argv)
     points = ([POINTS[int(i)] for i in args.points.split(",")] if args.points else POINTS)
@@ -64,8 +61,8 @@ def main(argv=None) -> None:
           f"{'area (finer)':>12s} {'ev':>5s} | same")
     totals, agree = [0, 0], 0
     for seed, zeta, load in points:
-        default = solve(seed, zeta, load, step, args.approach)
-        finer = solve(seed, zeta, load, step / args.finer, args.approach)
+        default = solve(seed, zeta, load, step)
+        finer = solve(seed, zeta, load, step / args.finer)
         same = (default["converged"] and finer["converged"]
                 and abs(default["area"] - finer["area"]) <= SAME * abs(finer["area"]))
         agree += same

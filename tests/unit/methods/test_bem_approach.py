@@ -1,4 +1,4 @@
-"""The approach with events (``Discretization(approach="events")``): its events (each fires on a
+"""The approach with events: its events (each fires on a
 case), the fold estimate on a branch whose fold is known, and the answer converged in the step."""
 from __future__ import annotations
 
@@ -16,7 +16,6 @@ from viscocontact.rheology import StandardLinearSolid
 from viscocontact.solvers import Broyden, Newton
 
 SLS = StandardLinearSolid(beta=10.0)
-EVENTS = Discretization(approach="events")
 
 
 def rough12(path_step=0.05, **control):
@@ -25,8 +24,7 @@ def rough12(path_step=0.05, **control):
     return ContactProblem(profile=SelfAffineProfile(hurst=0.8, scales=12, rms=0.01, seed=3),
                           rheology=SLS, solver=Broyden(), adhesion=EnergyBalance(gamma=2.387e-7),
                           zeta=0.1, discretization=Discretization(elements=32,
-                                                                  path_step=path_step,
-                                                                  approach="events"),
+                                                                  path_step=path_step),
                           **(control or {"penetration": 0.4}))
 
 
@@ -65,8 +63,7 @@ def test_past_its_load_peak_a_wavy_contact_jumps_to_closure_under_load_control()
     load peaks below the target (a fold in the load), the edges' motion past it closes the
     contact, and a closed adhesive contact carries the load."""
     problem = ContactProblem(profile=Sinusoid(amplitude=0.05), rheology=SLS, solver=Broyden(),
-                             adhesion=EnergyBalance(gamma=1e-5), mean_pressure=0.6, zeta=0.01,
-                             discretization=EVENTS)
+                             adhesion=EnergyBalance(gamma=1e-5), mean_pressure=0.6, zeta=0.01)
     result = problem.solve()
     assert result.converged and result.full_contact
     events = result.extras["path_events"]
@@ -77,8 +74,7 @@ def test_past_its_load_peak_a_wavy_contact_jumps_to_closure_under_load_control()
 def test_the_target_ends_the_path_exactly():
     for control in ({"penetration": 0.3}, {"mean_pressure": 0.1}):
         problem = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=SLS, solver=Newton(),
-                                 adhesion=EnergyBalance(gamma=1e-4), zeta=1e-3,
-                                 discretization=EVENTS, **control)
+                                 adhesion=EnergyBalance(gamma=1e-4), zeta=1e-3, **control)
         result = problem.solve()
         key, value = next(iter(control.items()))
         assert result.converged and getattr(result, key) == pytest.approx(value, abs=1e-9)

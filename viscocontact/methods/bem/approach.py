@@ -84,6 +84,8 @@ class Approach:
             # contact): no contact yet
             return State.no_contact()
         d0, edges = first_touch(self.eq.prep.shape)
+        if not self.eq.adhesive:
+            return self.pressed(edges, d0, target)
         touch = Control.penetration_of(d0)
         edges = self.with_field(edges, touch)
         state = self.relax.run(edges, touch, final=False)
@@ -102,6 +104,21 @@ class Approach:
             _record(self.eq.log, "no first contact", penetration=d0)
             return self.at_once(edges, target)
         if state.outcome is Outcome.FULL_CONTACT:   # the first contact settles
+            return self.closed(state, None, target)
+        if not state.converged:
+            return state
+        return self.climb(state, target)
+
+    def pressed(self, edges, d0: float, target: Control) -> State:
+        """An adhesionless contact from its first touch at ``Δ̃ = d0`` (a point: no edge
+        motion settles it): its equilibrium is unique, so the path only gives each solve a
+        close start. The first path step's penetration is solved from the first touch, then the
+        branch is followed to the target."""
+        first = Control.penetration_of(d0 + self.options.path_step)
+        if not target.is_load and target.value <= first.value:
+            return self.eq.solve(edges, target)
+        state = self.eq.solve(edges, first)
+        if state.outcome is Outcome.FULL_CONTACT:
             return self.closed(state, None, target)
         if not state.converged:
             return state

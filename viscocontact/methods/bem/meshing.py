@@ -41,20 +41,11 @@ class Discretization:
     check_points : int
         Points of the uniform grid on which interpenetration is checked.
     path_step : float
-        Largest penetration step ``Δ̃`` of the approach path. On a rough adhesive profile the
-        equilibrium reached from first touch can depend on it: at ζ = 1e-2 about a quarter of the
-        thesis profile's points land on another equilibrium at a ten times smaller step
-        (``benchmarks/results`` §11); a study that needs the quasi-static branch point by point
-        should check its points at a smaller step.
-    approach : {"stepped", "events"}
-        How the approach from first touch is followed. ``"stepped"`` (default): steps of the
-        penetration whose failures are halved, folds crossed and jumps searched for by the
-        path's rules. ``"events"``: a continuation in the controlled quantity with located events
-        (births, merges, detachments, folds, closure) and one jump rule, the edges' overdamped
-        motion (:mod:`~viscocontact.methods.bem.approach`), which locates every event to 1/256
-        of the path step; at about three times the residual evaluations of ``"stepped"``, and
-        not yet converged in the step on every rough point
-        (``benchmarks/approach_paths.py --approach events``: 13 of 15).
+        Largest step of the approach path (in the penetration ``Δ̃``; under load control, in
+        the load that moves the first contact as far). Its events (folds, births, merges) are
+        located to 1/256 of it (:mod:`~viscocontact.methods.bem.approach`), so the state reached
+        is converged in the step: a smaller step reaches the same equilibrium
+        (``benchmarks/approach_paths.py``).
     interior_resolution : float or None
         Elements per shortest wavelength of the profile (:attr:`Profile.shortest_wavelength`)
         inside a contact. The clustered mesh of eq. 4.22 puts its largest elements mid-contact
@@ -79,8 +70,6 @@ class Discretization:
     grading: float = attrs.field(default=1.15, validator=in_range(1.05, 2.0))
     check_points: int = attrs.field(default=2048, validator=int_range(64, 1 << 20))
     path_step: float = attrs.field(default=0.05, validator=in_range(1e-4, 1.0))
-    approach: str = attrs.field(default="stepped",
-                                validator=attrs.validators.in_(("stepped", "events")))
     interior_resolution: float | None = attrs.field(
         default=8.0,
         validator=attrs.validators.optional(in_range(1.0, 64.0)))  # type: ignore[arg-type]

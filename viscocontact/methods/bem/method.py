@@ -5,8 +5,9 @@ A solve wires the parts, each with one job: the mesh policy
 (:mod:`~viscocontact.methods.bem.meshing`), the edge system of a fixed contact set
 (:mod:`~viscocontact.methods.bem.system`), the equilibrium at one control value with its
 contact-set changes (:mod:`~viscocontact.methods.bem.equilibrium`), the grid checks
-(:mod:`~viscocontact.methods.bem.checks`), the approach path and load stability
-(:mod:`~viscocontact.methods.bem.path`), the closed state (:mod:`~viscocontact.methods.bem.closed`)
+(:mod:`~viscocontact.methods.bem.checks`), the approach from first touch with its events and
+jumps (:mod:`~viscocontact.methods.bem.approach`, :mod:`~viscocontact.methods.bem.relax`),
+the closed state (:mod:`~viscocontact.methods.bem.closed`)
 and the result (:meth:`Solve.assemble`).
 """
 from __future__ import annotations
@@ -88,8 +89,7 @@ class Solve:
             tolerances=attrs.evolve(tol, residual=tol.residual * residual_scale(prep.kernel)),
             max_restarts=problem.max_restarts, checks=self.checks, log=self.log)
         self.path = Path(self.equilibrium, self.closed, disc.path_step)
-        self.events = (Approach(self.path, ApproachOptions(path_step=disc.path_step))
-                       if disc.approach == "events" else None)
+        self.approach = Approach(self.path, ApproachOptions(path_step=disc.path_step))
 
     def run(self, initial, want_fields: bool, estimate_error: bool = False) -> ContactResult:
         t0 = time.perf_counter()
@@ -108,27 +108,21 @@ class Solve:
             out = Relaxation(self.equilibrium, self.closed, initial.tolerance).run(
                 initial.edges, target)
         elif initial is not None and getattr(initial, "full_contact", False):
-            out = (self.events.from_full_contact(target) if self.events is not None
-                   else self.path.from_full_contact(target))
+            out = self.approach.from_full_contact(target)
         elif initial is not None:
             edges = np.asarray(getattr(initial, "edges", initial), dtype=float).ravel()
             out = self.equilibrium.solve(edges, target)
             if out.outcome is Outcome.NOT_CONVERGED and adhesive and not target.is_load:
                 # retracted past the fold of its branch, the contact pulls off
-                out = (Relaxation(self.equilibrium, self.closed).run(edges, target)
-                       if self.events is not None else self.path.release(edges, target) or out)
+                out = Relaxation(self.equilibrium, self.closed).run(edges, target)
             if out.outcome is Outcome.NOT_CONVERGED and not adhesive:
                 # an adhesionless equilibrium does not depend on the path: start afresh
                 self.log.event(f"no equilibrium from the given contact set ({out.message}); "
                                "solved from first touch")
                 self.policy.forget()       # the same answer as a solve from first touch
-                out = self.path.approach(target)
-        elif self.events is not None:
-            out = self.events.run(target)
+                out = self.approach.run(target)
         else:
-            out = self.path.approach(target)
-            if target.is_load and out.outcome is Outcome.CONVERGED and adhesive:
-                out = self.path.stable_under_load(out, target)
+            out = self.approach.run(target)
         found = (estimate(lambda disc: Solve(attrs.evolve(p, discretization=disc), self.prep),
                           p.discretization, self.prep, self.spec, out, target)
                  if estimate_error and out.outcome is Outcome.CONVERGED else None)
