@@ -502,3 +502,35 @@ def test_the_one_first_touch_failure_of_the_5nm_set_converges():
     _, r = _from_first_touch(5.0, seed=14, zeta=1e4, load=0.6)
     assert r.mean_pressure == pytest.approx(0.6, abs=1e-9) and r.min_gap > 0
     assert r.n_contacts == 4 and r.area == pytest.approx(0.434684, rel=1e-5)
+
+
+@pytest.mark.slow     # the BEM's attempt, the grid's, and the grid again by name: 12 s
+def test_auto_hands_on_the_method_that_solves_the_rough_scene_with_a_long_range():
+    """The thesis rough scene (seed 0) with a range of 1 µm in SI units (h̃0 = 1.0e-3, λ ≈ 0.5)
+    at Δ = Λ/2: the BEM's approach found no zone lengths once the zones of neighbouring
+    contacts met across a gap beyond the range, and ``auto`` handed that failure on. It now
+    hands on the answer of the method that solves the scene, which the events name: the
+    spectral grid's (six contacts; its error estimate within the tolerance), the same numbers
+    as the spectral method asked for by name."""
+    from pathlib import Path
+
+    from viscocontact.methods.spectral import Spectral
+    from viscocontact.scene import Scene
+
+    text = (Path(__file__).parents[2] / "examples/scenes/thesis_rough.toml").read_text()
+    text = (text.replace('kind = "energy-balance"', 'kind = "maugis-dugdale"')
+            .replace("equilibrium_distance = 1e-9", "cohesive_range = 1e-6")
+            .replace("mean_pressure = 0.3", "penetration = 0.5"))
+    prob = ContactProblem.from_scene(Scene.from_toml(text))
+    assert prob.method.name == "auto"
+    r = prob.solve()
+    assert r.converged, r.message
+    events = r.extras["events"]
+    assert events[0].startswith("method bem: adhesive scene")
+    grid = Spectral(tolerance=prob.method.tolerance).solve(prob)
+    assert grid.converged and grid.error_estimate <= prob.method.tolerance
+    if r.method == "spectral":
+        assert events[1].startswith("method spectral: the bem solve")
+        assert r.area == grid.area and r.friction == grid.friction
+    else:      # the BEM solved it: to the grid's error estimate
+        assert r.area == pytest.approx(grid.area, rel=grid.error_estimate)
