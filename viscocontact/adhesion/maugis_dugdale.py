@@ -44,8 +44,8 @@ import attrs
 import numpy as np
 
 from .._validation import in_range
-from ..contact.cohesive import (ZoneError, filled, intensity, neck_ends, partner, room,
-                                tips, zone_derivatives, zone_fields, zone_widths)
+from ..contact.cohesive import (TipCondition, ZoneError, filled, intensity, neck_ends, partner,
+                                room, tips, zone_derivatives, zone_fields, zone_widths)
 from .base import AdhesionLimitation, AdhesionModel, EdgeTerms
 
 #: Resolved length of the edge mesh as a fraction of the quasi-static zone ``h̃0²/(4γ̃)``.
@@ -152,9 +152,10 @@ class MaugisDugdale(AdhesionModel):
         def admissible(fields, necks):
             return not np.any(self._reclassified(fields, kernel, shape, necks)[1])
 
+        tip = self.tip_condition(shape)
         try:
             fields = zone_fields(base, kernel, stress=stress, control=control, start=start,
-                                 full=full, admissible=admissible)
+                                 full=full, admissible=admissible, tip=tip)
             # open zones whose free interval between the tips has no gap beyond the range (and
             # none below the surface): the law acts across it, so the zones fill the neck
             narrow = self._reclassified(fields, kernel, shape)[0]
@@ -162,10 +163,18 @@ class MaugisDugdale(AdhesionModel):
                 fields = zone_fields(base, kernel, stress=stress, control=control,
                                      start=zone_widths(fields),
                                      full=narrow | filled(mesh.edges, zone_widths(fields)),
-                                     admissible=admissible)
+                                     admissible=admissible, tip=tip)
             return fields
         except ZoneError as exc:
             raise AdhesionLimitation(f"Maugis-Dugdale zones: {exc}") from exc
+
+    def tip_condition(self, shape) -> TipCondition:
+        """The tips' closing condition mixed into the zones' equations (:class:`~viscocontact.
+        contact.cohesive.TipCondition`): ``W = K̃_c/(2η)``, the slope of :meth:`residuals`'s
+        tip term at its root."""
+        eta = self.opening(shape.amplitude)
+        return TipCondition(shape=shape, opening=eta,
+                            weight=self.critical_intensity(shape.amplitude) / (2.0 * eta))
 
     def critical_intensity(self, amplitude: float) -> float:
         """``K̃_c = √(4·2πγ̃/Λ̃²)``: the stress-intensity factor whose Irwin energy release
@@ -307,8 +316,11 @@ class MaugisDugdale(AdhesionModel):
         key = "maugis-dugdale zones"           # dfields is of this point's field only
         if key not in dfields.memo:
             try:
-                dfields.memo[key] = zone_derivatives(ctx.fields, dfields,
-                                                     stress=self.strength(ctx.amplitude))
+                f = ctx.fields
+                weights = self.tip_condition(ctx.shape).weights(f, ctx.kernel, zone_widths(f))
+                dfields.memo[key] = zone_derivatives(f, dfields,
+                                                     stress=self.strength(ctx.amplitude),
+                                                     tip_weights=weights)
             except np.linalg.LinAlgError:
                 dfields.memo[key] = None
         return dfields.memo[key]
