@@ -61,6 +61,44 @@ def test_mesh_convergence_without_edge_zones():
     assert errs[1] < 2e-5 and errs[0] / errs[1] > 8
 
 
+@pytest.mark.parametrize("lam, delta", [
+    pytest.param(0.5, 0.2, marks=pytest.mark.slow), (0.5, 0.5),
+    pytest.param(0.5, 0.8, marks=pytest.mark.slow), pytest.param(1.0, 0.65, marks=pytest.mark.slow),
+    (1.0, 0.8)])
+def test_penetration_control_reaches_the_states_of_load_control_and_the_grid(lam, delta):
+    """Zones as long as the contact (λ = 0.5: η = 0.80; λ = 1: η = 0.40) under penetration
+    control. At fixed edges and penetration ``K̃`` alone has two roots in the zone length or
+    none, and the equilibrium lies on the long-zone root (λ = 0.5) or where the two merge
+    (λ = 1 at Δ̃ ≈ 0.65), so that the approach failed at every penetration at λ = 0.5 and past
+    Δ̃ = 0.65 at λ = 1, where load control converged; the zones' equations now mix in the tip
+    condition (``contact.cohesive.TipCondition``). Measured: the state is the reference's
+    (Δ̃ of the reference at the BEM's area within 9e-5, p̃∞ within 7e-5: the edge zones'
+    offset), load control from first touch at its load reaches the same state (Ã to 2e-9) on
+    the partial branch, and from it on the saturated one (λ = 0.5, Δ̃ = 0.8, where the zones
+    fill the neck), and the spectral grid agrees within its error estimate plus that offset
+    (Ã: 1.6e-4 against an estimate of 4.7e-4 at λ = 0.5, Δ̃ = 0.2; 1.0e-4 against 1.1e-5 at
+    λ = 1, Δ̃ = 0.65)."""
+    from viscocontact.methods.spectral import Spectral
+
+    ref = MaugisDugdaleWavy.from_transition(Gamma=GAMMA, transition=lam)
+    model = MaugisDugdale(gamma=GAMMA * AMP**2, range=ref.h0 * AMP)
+    kw = dict(profile=Sinusoid(amplitude=AMP), rheology=Elastic(), adhesion=model,
+              solver=Newton())
+    r = ContactProblem(method=BEM(), penetration=delta, **kw).solve()
+    assert r.converged, r.message
+    state = min(ref.states(r.area), key=lambda s: abs(s.penetration - delta))
+    assert state.penetration == pytest.approx(delta, abs=2e-4)
+    assert r.mean_pressure == pytest.approx(state.mean_pressure, abs=2e-4)
+    loaded = ContactProblem(method=BEM(), mean_pressure=r.mean_pressure, **kw)
+    load = loaded.solve(initial=r if state.saturated else None)
+    assert load.converged, load.message
+    assert load.area == pytest.approx(r.area, rel=1e-7)
+    assert load.penetration == pytest.approx(delta, abs=1e-7)
+    grid = Spectral().solve(ContactProblem(method=Spectral(), penetration=delta, **kw))
+    assert grid.converged and grid.n_contacts == 1
+    assert abs(r.area / grid.area - 1) <= grid.error_estimate + 2e-4
+
+
 @pytest.mark.parametrize("lam", [1.0, 2.0, 10.0])
 def test_the_pull_off_is_the_wavy_solutions(lam):
     """The most tensile load of the partial-contact branch (the pull-off under load control,

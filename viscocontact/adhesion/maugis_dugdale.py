@@ -10,8 +10,10 @@ units of thesis eq. 4.17 (``γ̃`` as for :class:`EnergyBalance`, the range ``h�
 Formulation. Each contact ``[X_{2j-1}, X_{2j}]`` carries a zone outside each edge where the stress
 is the known ``σ̃0``; inside the contact the gap vanishes. The zones enter the field solve as
 known loads (:mod:`viscocontact.contact.cohesive`): for given edges their lengths make the stress
-bounded at every edge (``K̃_i = 0``, the Maugis–Dugdale condition), solved per evaluation by an
-inner Newton iteration on the factorisation at hand (:meth:`field_solution`). The edge residual
+bounded at every edge (``K̃_i = 0``, the Maugis–Dugdale condition) — mixed with the tip condition,
+``K̃_i = W(g̃(c_i) - η)`` (:meth:`tip_condition`), so that long zones have one root at fixed edges
+— solved per evaluation by an inner Newton iteration on the factorisation at hand
+(:meth:`field_solution`). The edge residual
 is the tip condition ``g̃(c_i) = η`` (:meth:`residuals`; the module docstring of
 :mod:`~viscocontact.contact.cohesive` says why the split is this way round), so the outer
 unknowns stay the edges and every solver, path and contact-set rule of the BEM applies

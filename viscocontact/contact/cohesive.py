@@ -12,8 +12,11 @@ Why that split and not the other: at fixed edges the tip gap is stationary in th
 exactly where the stress is bounded (Dugdale's opening at the zone end,
 ``δ = (8/E')(K√(d/2π) - σ0 d/π)``, is largest at ``d = πK²/(8σ0²)``, where ``K`` is cancelled),
 so ``g̃(c_i) = η`` has a double root there and cannot fix ``d_i``; ``K̃_i(d)`` instead falls
-monotonically with the zone (like ``-σ̃0√(8d_i/π)``), and at fixed bounded stress the tip gap rises
-monotonically as the edge moves out (``δ = K²/(σ0E')``).
+monotonically with a short zone (like ``-σ̃0√(8d_i/π)``), and at fixed bounded stress the tip gap
+rises monotonically as the edge moves out (``δ = K²/(σ0E')``). A zone as long as the contact
+turns ``K̃_i(d)`` back up at fixed penetration, where the tip gap rises with the zone instead:
+:class:`TipCondition` mixes the tip condition into the zones' equations, which keeps one root
+in both regimes and the same equilibria.
 
 A neck whose two zones have no roots before they meet (the facing edges need more traction
 than the whole neck carries) is filled by them (:func:`filled`): the neck is then held by the
