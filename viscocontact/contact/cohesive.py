@@ -271,16 +271,18 @@ def tip_gap_jacobian(fields: FieldSolution, kernel, shape, *, stress: float, con
     out = kernel.influence(c, mesh.left, mesh.right) @ ds - shift[None, :]
     out += stress * _kernel_slopes(kernel, c[:, None] - c[cols][None, :])
     loads = fields.loads
-    for jj, j in enumerate(cols):
-        at = c[j]
-        contact = _kernel_slopes(kernel, at - mesh.left) - _kernel_slopes(kernel, at - mesh.right)
-        ends_a = _kernel_slopes(kernel, at - loads.left)
-        ends_b = _kernel_slopes(kernel, at - loads.right)
-        # the zone's own end at its tip moves with it; its far end is the other one
-        own_far = ends_b[j] if sign[j] < 0 else ends_a[j]
-        others = np.delete(ends_a - ends_b, j).sum()
-        slope = contact @ fields.sigma + stress * others - float(shape.slopes(np.array([at]))[0])
-        out[j, jj] += sign[j] * slope + stress * own_far
+    at = c[cols][:, None]
+    contact = (_kernel_slopes(kernel, at - mesh.left[None, :])
+               - _kernel_slopes(kernel, at - mesh.right[None, :])) @ fields.sigma
+    # the other zones' slopes at the moving tips; a zone's own end at its tip moves with it, and
+    # its far end (the edge) counts as the load growing there
+    across = _kernel_slopes(kernel, at - loads.left[None, :]) - _kernel_slopes(
+        kernel, at - loads.right[None, :])
+    rows = np.arange(len(cols))
+    far = np.where(sign[cols] < 0, loads.right[cols], loads.left[cols])
+    own_far = _kernel_slopes(kernel, c[cols] - far)
+    slope = contact + stress * (across.sum(axis=1) - across[rows, cols]) - shape.slopes(c[cols])
+    out[cols, rows] += sign[cols] * slope + stress * own_far
     return out
 
 
