@@ -10,8 +10,10 @@ units of thesis eq. 4.17 (``γ̃`` as for :class:`EnergyBalance`, the range ``h�
 Formulation. Each contact ``[X_{2j-1}, X_{2j}]`` carries a zone outside each edge where the stress
 is the known ``σ̃0``; inside the contact the gap vanishes. The zones enter the field solve as
 known loads (:mod:`viscocontact.contact.cohesive`): for given edges their lengths make the stress
-bounded at every edge (``K̃_i = 0``, the Maugis–Dugdale condition), solved per evaluation by an
-inner Newton iteration on the factorisation at hand (:meth:`field_solution`). The edge residual
+bounded at every edge (``K̃_i = 0``, the Maugis–Dugdale condition) — mixed with the tip condition,
+``K̃_i = W(g̃(c_i) - η)`` (:meth:`tip_condition`), so that long zones have one root at fixed edges
+— solved per evaluation by an inner Newton iteration on the factorisation at hand
+(:meth:`field_solution`). The edge residual
 is the tip condition ``g̃(c_i) = η`` (:meth:`residuals`; the module docstring of
 :mod:`~viscocontact.contact.cohesive` says why the split is this way round), so the outer
 unknowns stay the edges and every solver, path and contact-set rule of the BEM applies
@@ -44,8 +46,8 @@ import attrs
 import numpy as np
 
 from .._validation import in_range
-from ..contact.cohesive import (ZoneError, filled, intensity, neck_ends, partner, room,
-                                tips, zone_derivatives, zone_fields, zone_widths)
+from ..contact.cohesive import (TipCondition, ZoneError, filled, intensity, neck_ends, partner,
+                                room, tips, zone_derivatives, zone_fields, zone_widths)
 from .base import AdhesionLimitation, AdhesionModel, EdgeTerms
 
 #: Resolved length of the edge mesh as a fraction of the quasi-static zone ``h̃0²/(4γ̃)``.
@@ -158,9 +160,10 @@ class MaugisDugdale(AdhesionModel):
         def admissible(fields, necks):
             return not np.any(self._reclassified(fields, kernel, shape, necks)[1])
 
+        tip = self.tip_condition(shape)
         try:
             fields = zone_fields(base, kernel, stress=stress, control=control, start=start,
-                                 full=full, admissible=admissible)
+                                 full=full, admissible=admissible, tip=tip)
             # open zones whose free interval between the tips has no gap beyond the range (and
             # none below the surface): the law acts across it, so the zones fill the neck
             narrow = self._reclassified(fields, kernel, shape)[0]
@@ -168,10 +171,18 @@ class MaugisDugdale(AdhesionModel):
                 fields = zone_fields(base, kernel, stress=stress, control=control,
                                      start=zone_widths(fields),
                                      full=narrow | filled(mesh.edges, zone_widths(fields)),
-                                     admissible=admissible)
+                                     admissible=admissible, tip=tip)
             return fields
         except ZoneError as exc:
             raise AdhesionLimitation(f"Maugis-Dugdale zones: {exc}") from exc
+
+    def tip_condition(self, shape) -> TipCondition:
+        """The tips' closing condition mixed into the zones' equations (:class:`~viscocontact.
+        contact.cohesive.TipCondition`): ``W = K̃_c/(2η)``, the slope of :meth:`residuals`'s
+        tip term at its root."""
+        eta = self.opening(shape.amplitude)
+        return TipCondition(shape=shape, opening=eta,
+                            weight=self.critical_intensity(shape.amplitude) / (2.0 * eta))
 
     def critical_intensity(self, amplitude: float) -> float:
         """``K̃_c = √(4·2πγ̃/Λ̃²)``: the stress-intensity factor whose Irwin energy release
@@ -313,8 +324,11 @@ class MaugisDugdale(AdhesionModel):
         key = "maugis-dugdale zones"           # dfields is of this point's field only
         if key not in dfields.memo:
             try:
-                dfields.memo[key] = zone_derivatives(ctx.fields, dfields,
-                                                     stress=self.strength(ctx.amplitude))
+                f = ctx.fields
+                weights = self.tip_condition(ctx.shape).weights(f, ctx.kernel, zone_widths(f))
+                dfields.memo[key] = zone_derivatives(f, dfields,
+                                                     stress=self.strength(ctx.amplitude),
+                                                     tip_weights=weights)
             except np.linalg.LinAlgError:
                 dfields.memo[key] = None
         return dfields.memo[key]

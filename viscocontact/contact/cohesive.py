@@ -12,8 +12,11 @@ Why that split and not the other: at fixed edges the tip gap is stationary in th
 exactly where the stress is bounded (Dugdale's opening at the zone end,
 ``δ = (8/E')(K√(d/2π) - σ0 d/π)``, is largest at ``d = πK²/(8σ0²)``, where ``K`` is cancelled),
 so ``g̃(c_i) = η`` has a double root there and cannot fix ``d_i``; ``K̃_i(d)`` instead falls
-monotonically with the zone (like ``-σ̃0√(8d_i/π)``), and at fixed bounded stress the tip gap rises
-monotonically as the edge moves out (``δ = K²/(σ0E')``).
+monotonically with a short zone (like ``-σ̃0√(8d_i/π)``), and at fixed bounded stress the tip gap
+rises monotonically as the edge moves out (``δ = K²/(σ0E')``). A zone as long as the contact
+turns ``K̃_i(d)`` back up at fixed penetration, where the tip gap rises with the zone instead:
+:class:`TipCondition` mixes the tip condition into the zones' equations, which keeps one root
+in both regimes and the same equilibria.
 
 A neck whose two zones have no roots before they meet (the facing edges need more traction
 than the whole neck carries) is filled by them (:func:`filled`): the neck is then held by the
@@ -56,6 +59,58 @@ FILL = 1.0 - 1e-12
 
 class ZoneError(ViscoContactError):
     """The cohesive zones of a contact set have no admissible lengths (the reason says why)."""
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class TipCondition:
+    """The tips' closing condition ``g̃(c_i) = η`` as :func:`zone_fields` mixes it into the
+    zones' equations: ``K̃_i - W (g̃(c_i) - η) = 0`` with ``W = K̃_c/(2η)``, the slope of the edge
+    residual ``K̃_c(√(g̃/η) - 1)`` at its root (so that both terms are in stress-intensity units
+    and weigh alike).
+
+    At an equilibrium both terms vanish, so the mixture has the same roots as the edge system
+    with ``K̃ = 0``; what it changes is the zone lengths at fixed edges away from it, which now
+    have one root where ``K̃`` alone has two or none. (A tip below the profile counts as a zero
+    opening, as in the edge residual: ``max(g̃, 0)``.) At fixed edges and penetration ``K̃`` is
+    not monotonic in a zone's length: it falls like ``-σ̃0√(8d/π)`` while the zone is short
+    against the contact, and rises again once a long zone's own load presses the contact (at
+    fixed penetration its tension is carried by more contact pressure). Where zones are as long
+    as the contact (Maugis's λ ≲ 1) the penetration-controlled equilibrium lies on that rising
+    side, or at the minimum where the two roots merge (λ = 1, Δ̃ ≈ 0.65 on the sinusoid of
+    ``tests/integration/test_maugis_dugdale_bem.py``), and the outer solve had no zone lengths
+    at the edges around it. The tip gap rises with the zone there
+    (:func:`tip_gap_jacobian`), so the mixture falls monotonically; for short zones the tip gap
+    is stationary where ``K̃`` vanishes (the module docstring), and the mixture is ``K̃``.
+
+    Attributes
+    ----------
+    shape : NormalizedProfile
+        The profile whose gap the tips close on.
+    opening : float
+        ``η = h̃0/Λ̃``.
+    weight : float
+        ``W``.
+    """
+
+    shape: object
+    opening: float
+    weight: float
+
+    def mixed(self, fields: FieldSolution, kernel, k: np.ndarray, lengths: np.ndarray,
+              which: np.ndarray) -> np.ndarray:
+        """``k`` (the edges' ``K̃``) with ``W (max(g̃(c_i), 0) - η)`` taken off at the zones
+        ``which`` (a tip below the profile, as at a contact too small for its penetration, is
+        the edge residual's zero opening too)."""
+        if not np.any(which):
+            return k
+        c = tips(fields.mesh.edges, lengths)
+        g = tip_gaps(fields, kernel, self.shape, c)
+        return np.where(which, k - self.weight * (np.maximum(g, 0.0) - self.opening), k)
+
+    def weights(self, fields: FieldSolution, kernel, lengths: np.ndarray) -> np.ndarray:
+        """``∂(W max(g̃, 0))/∂g̃`` at every edge's tip: ``W`` where the tip gap is positive."""
+        g = tip_gaps(fields, kernel, self.shape, tips(fields.mesh.edges, lengths))
+        return np.where(g > 0.0, self.weight, 0.0)
 
 
 def zone_loads(edges: np.ndarray, lengths: np.ndarray, stress: float) -> KnownLoads:
@@ -187,10 +242,54 @@ def intensity_jacobian(fields: FieldSolution, kernel, *, stress: float, control:
     return bounded_weights(mesh) @ ds
 
 
+def tip_gap_jacobian(fields: FieldSolution, kernel, shape, *, stress: float, control: dict,
+                     columns: np.ndarray) -> np.ndarray:
+    """``∂g̃(c_i)/∂d_j`` of :func:`tip_gaps` at fixed edges, for the zones ``j`` in ``columns``.
+
+    A zone that grows moves its tip only: the contact stresses change as in
+    :func:`intensity_jacobian` (in load control with the penetration that keeps the load, which
+    the gap sees too), every other tip sees the zone's load grow at the moving tip
+    (``σ̃0 G̃(c_i - c_j)``), and the zone's own tip moves along the gap's slope there (the contact
+    stresses' and the other zones', less the profile's) while its own load, whose end moves
+    with it, changes by its far end's ``σ̃0 G̃`` (the terms of :func:`zone_derivatives`).
+    """
+    mesh = fields.mesh
+    d = zone_widths(fields)
+    n = len(d)
+    cols = np.asarray(columns, dtype=np.intp)
+    sign = np.tile([-1.0, 1.0], n // 2)
+    c = tips(mesh.edges, d)
+    ds = _growth_stresses(fields, kernel, stress, c[cols])
+    shift = np.zeros(len(cols))
+    if control.get("mean_pressure") is not None:
+        h = mesh.width
+        unit = fields.unit
+        if unit is None:
+            unit = lu_solve(fields.lu, np.ones_like(h), check_finite=False)
+        shift = (-(h @ ds) - stress) / (h @ unit)
+        ds += np.outer(unit, shift)
+    out = kernel.influence(c, mesh.left, mesh.right) @ ds - shift[None, :]
+    out += stress * _kernel_slopes(kernel, c[:, None] - c[cols][None, :])
+    loads = fields.loads
+    at = c[cols][:, None]
+    contact = (_kernel_slopes(kernel, at - mesh.left[None, :])
+               - _kernel_slopes(kernel, at - mesh.right[None, :])) @ fields.sigma
+    # the other zones' slopes at the moving tips; a zone's own end at its tip moves with it, and
+    # its far end (the edge) counts as the load growing there
+    across = _kernel_slopes(kernel, at - loads.left[None, :]) - _kernel_slopes(
+        kernel, at - loads.right[None, :])
+    rows = np.arange(len(cols))
+    far = np.where(sign[cols] < 0, loads.right[cols], loads.left[cols])
+    own_far = _kernel_slopes(kernel, c[cols] - far)
+    slope = contact + stress * (across.sum(axis=1) - across[rows, cols]) - shape.slopes(c[cols])
+    out[cols, rows] += sign[cols] * slope + stress * own_far
+    return out
+
+
 def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
                 start: np.ndarray, full: np.ndarray | None = None,
-                admissible: Callable[[FieldSolution, np.ndarray], bool] | None = None
-                ) -> FieldSolution:
+                admissible: Callable[[FieldSolution, np.ndarray], bool] | None = None,
+                tip: TipCondition | None = None) -> FieldSolution:
     """The field of ``base``'s contacts with the zones that bound the stress at every edge.
 
     For fixed contact edges, each zone length ``d_i`` is set so that the stress is bounded at its
@@ -221,6 +320,10 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
         ``admissible(fields, necks)``: whether the necks of the edges ``necks`` may be filled
         in ``fields`` (the law acts across them: the gap stays below the range). Without it
         every neck may.
+    tip : TipCondition, optional
+        Solve ``K̃_i - W (g̃(c_i) - η) = 0`` at every zone that does not fill its neck instead
+        of ``K̃_i = 0`` (the same equilibria, one root at fixed edges where the zones are long;
+        :class:`TipCondition`).
 
     Returns
     -------
@@ -250,8 +353,12 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
     weights = bounded_weights(base.mesh)
 
     def evaluate(t):
-        f = with_loads(base, kernel, zone_loads(edges, t * t, stress), **control)
-        return f, weights @ f.sigma
+        d = t * t
+        f = with_loads(base, kernel, zone_loads(edges, d, stress), **control)
+        k = weights @ f.sigma
+        if tip is not None:
+            k = tip.mixed(f, kernel, k, d, (d > 0.0) & ~filled(edges, d))
+        return f, k
 
     def fill(t, which):
         """``√d`` with the zones of ``which`` tiling their necks, in the ratio they had."""
@@ -316,8 +423,12 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
             continue
         screened |= (t > 0.0) & (k < 0.0)
         idx = np.flatnonzero(active)
-        J = intensity_jacobian(fields, kernel, stress=stress, control=control,
-                               columns=idx)[idx] * (2.0 * t[idx])
+        J = intensity_jacobian(fields, kernel, stress=stress, control=control, columns=idx)[idx]
+        if tip is not None:
+            w = tip.weights(fields, kernel, t * t)[idx]
+            J -= w[:, None] * tip_gap_jacobian(fields, kernel, tip.shape, stress=stress,
+                                               control=control, columns=idx)[idx]
+        J *= 2.0 * t[idx]
         beyond = np.diag(J) >= 0.0
         step = None
         if not np.any(beyond):
@@ -346,7 +457,11 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
                 tested |= neck
                 trial = fill(t, full | neck)
                 f_try, k_try = evaluate(trial)
-                if np.any(neck & (k_try >= 0.0)) and allowed(f_try, neck):
+                # (mixed with the tip condition, the zones' equations at their meeting point:
+                # continuous with theirs just before it, where the filled neck has no tips)
+                k_met = (k_try if tip is None
+                         else tip.mixed(f_try, kernel, k_try, trial * trial, neck))
+                if np.any(neck & (k_met >= 0.0)) and allowed(f_try, neck):
                     full = full | neck
                     t, fields, k = trial, f_try, k_try
                     capped = np.zeros(n, bool)
@@ -426,7 +541,8 @@ class ZoneDerivatives:
     pressure: np.ndarray
 
 
-def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDerivatives:
+def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
+                     tip_weights: np.ndarray | None = None) -> ZoneDerivatives:
     r"""The derivatives of a field with zones (:func:`zone_fields`) in every edge and the
     penetration, from solves with a column per direction and per zone on its factorisation.
 
@@ -438,7 +554,8 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDe
     tips), with the tip and the elements moving under the stresses, with the zones' loads seen
     from the moving tip (a zone's own end at its tip does not count: it moves with it), with
     the profile's slope and the penetration. The lengths follow from ``K̃ = 0`` at every zone:
-    ``ḋ = -(∂K̃/∂d)⁻¹ ∂K̃/∂(x, Δ̃)``.
+    ``ḋ = -(∂K̃/∂d)⁻¹ ∂K̃/∂(x, Δ̃)``, or with ``tip_weights`` (per edge,
+    :meth:`TipCondition.weights`) from ``K̃ - W (max(g̃, 0) - η) = 0`` (:class:`TipCondition`).
 
     Raises
     ------
@@ -519,7 +636,11 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float) -> ZoneDe
     free = ~full
     if np.any(free):
         rows = act[free]
-        dd[free] = -np.linalg.solve(kd[rows][:, free], kx[rows] + kd[rows][:, full] @ dd[full])
+        # K̃ - W (g̃ - η) = 0 at every such zone (W = 0: K̃ = 0; TipCondition)
+        w = np.zeros(len(rows)) if tip_weights is None else np.asarray(tip_weights)[rows]
+        phi_d = kd[rows] - w[:, None] * gd[free]
+        phi_x = kx[rows] - w[:, None] * gx[free]
+        dd[free] = -np.linalg.solve(phi_d[:, free], phi_x + phi_d[:, full] @ dd[full])
     lengths = np.zeros((n, n_dirs))
     lengths[act] = dd
     # a filled neck has no tips: its zones' rows (where the meeting tips sit on each other's

@@ -8,13 +8,17 @@ adhesionless contact, not along the loading path, so it serves as a cross-check 
 for by name). When the spectral method cannot reach the requested tolerance on the largest grid
 it allows, the BEM finishes the job seeded with the grid's contact set; when the grid solve does
 not converge at all (a very stiff solid at ζ ~ 1, whose trailing-edge layer the grid does not
-resolve), the BEM solves the scene from the caller's start.
+resolve), the BEM solves the scene from the caller's start. The other way round, when the BEM
+does not converge on an adhesive scene (or estimates its error above the tolerance) and the
+scene has a finite-range law that the grid applies, the spectral method solves it, and its
+answer is returned when it meets the tolerance: the events say which method ran and why.
 """
 from __future__ import annotations
 
 from typing import ClassVar
 
 import attrs
+import numpy as np
 
 from .._validation import in_range, int_range
 from .base import SolutionMethod
@@ -34,6 +38,12 @@ class Auto(SolutionMethod):
         (the result then comes from the BEM and says so in its events).
     max_points : int or None
         Largest grid the spectral method may use (``None``: its default).
+    spectral_fallback : bool
+        When the BEM, chosen for an adhesive scene, does not converge or estimates its error
+        above ``tolerance``, solve the scene on the spectral method's grid where the grid
+        applies (a finite-range law, :meth:`Spectral.unsupported`); its answer is returned
+        when it converges within the tolerance (or the BEM's did not converge at all), and
+        the events say which method ran and why.
     """
 
     name: ClassVar[str] = "auto"
@@ -43,6 +53,8 @@ class Auto(SolutionMethod):
                                         validator=attrs.validators.instance_of(bool))
     max_points: int | None = attrs.field(default=None, validator=attrs.validators.optional(
         int_range(64, 1 << 22)))
+    spectral_fallback: bool = attrs.field(default=True,
+                                          validator=attrs.validators.instance_of(bool))
 
     def choose(self, problem) -> tuple[SolutionMethod, str]:
         """The method a solve of ``problem`` takes, and why."""
@@ -85,14 +97,16 @@ class Auto(SolutionMethod):
         result = method.solve(problem, initial, fields=fields, prepared=prepared)
         events = result.extras.setdefault("events", [])
         events.insert(0, f"method {method.name}: {reason}")
-        if method.name != BEM.name and self.finish_with_bem and not result.converged:
+        if method.name == BEM.name:
+            return self._spectral_instead(problem, result, fields, prepared)
+        if self.finish_with_bem and not result.converged:
             # a grid solve that fails says nothing about the contact set: the BEM starts where
             # the caller asked (its approach path from first touch without a start)
             finished = BEM().solve(problem, initial, fields=fields, prepared=prepared)
             finished.extras.setdefault("events", []).insert(
                 0, f"method bem: the {method.name} solve did not converge ({result.message})")
             return finished
-        if (method.name != BEM.name and self.finish_with_bem and result.converged
+        if (self.finish_with_bem and result.converged
                 and not result.extras.get("tolerance_met", True)):
             estimate = result.extras.get("error_estimate")
             start = result if result.n_contacts or result.full_contact else initial
@@ -103,6 +117,36 @@ class Auto(SolutionMethod):
             return finished
         return result
 
+    def _spectral_instead(self, problem, result, fields: bool, prepared):
+        """``result`` of the BEM, or the spectral method's solve of ``problem`` when the BEM
+        failed (or estimates its error above the tolerance) and the grid applies to the scene
+        (:meth:`Spectral.unsupported`) and solves it. Either way the events say which ran."""
+        from .._events import logger
+
+        why = _shortfall(result, self.tolerance)
+        if why is None or not self.spectral_fallback:
+            return result
+        spectral = self.spectral()
+        unsupported = spectral.unsupported(problem)
+        if unsupported is not None:
+            result.extras["events"].append(f"the spectral method was not tried: {unsupported}")
+            return result
+        logger.info("auto: method spectral: the bem solve %s", why)
+        grid = spectral.solve(problem, fields=fields, prepared=prepared)
+        if _shortfall(grid, self.tolerance) is None or (
+                grid.converged and not result.converged):
+            # the choice first, then why the grid solved it, then the grid's own events
+            grid.extras.setdefault("events", [])[:0] = [
+                result.extras["events"][0],
+                f"method spectral: the bem solve {why}; the grid solves the scene (its "
+                "cohesive equilibrium is reached from the adhesionless contact, not along the "
+                "approach path)"]
+            return grid
+        result.extras["events"].append(
+            f"the spectral method, tried after the bem solve {why}, "
+            f"{_shortfall(grid, self.tolerance)}")
+        return result
+
     def plan_steps(self, problem, prepared) -> tuple:
         from ..plan import PlanStep
 
@@ -110,3 +154,14 @@ class Auto(SolutionMethod):
         # the choice and its reason stand for the chosen method's own "method" step
         inner = [step for step in method.plan_steps(problem, prepared) if step.stage != "method"]
         return (PlanStep(stage="method", choice=method.name, reason=reason), *inner)
+
+
+def _shortfall(result, tolerance: float) -> str | None:
+    """Why ``result`` is not an answer to hand on (None: it is): it did not converge, or its
+    method's error estimate (finite) is above ``tolerance``."""
+    if not result.converged:
+        return f"did not converge ({result.message})"
+    estimate = result.error_estimate
+    if np.isfinite(estimate) and estimate > tolerance:
+        return f"estimates its error at {estimate:.2g}, above the tolerance {tolerance:g}"
+    return None

@@ -11,7 +11,8 @@ from hypothesis import strategies as st
 from viscocontact import _registry
 from viscocontact.adhesion import AdhesionModel, MaugisDugdale
 from viscocontact.contact.cohesive import (bounded_weights, intensity, intensity_jacobian, room,
-                                           tips, zone_fields, zone_loads)
+                                           tip_gap_jacobian, tip_gaps, tips, zone_fields,
+                                           zone_loads)
 from viscocontact.contact.fields import (BOUNDED_POWERS, NormalizedProfile, intensity_matrix,
                                          solve_fields, stress_intensity, with_loads)
 from viscocontact.contact.mesh import MeshSpec, build_mesh
@@ -218,6 +219,39 @@ def test_intensity_jacobian_equals_central_differences(d, zeta, load, zones):
         fd[:, col] = (4 * central(j, h / 2) - central(j, h)) / 3
     scale = np.max(np.abs(fd), axis=0)
     assert np.all(np.abs(J - fd) <= 1e-5 * scale), (J, fd)
+
+
+@pytest.mark.parametrize("zeta", [0.0, 1.0])
+@pytest.mark.parametrize("load", [False, True])
+def test_tip_gap_jacobian_equals_central_differences(zeta, load):
+    """``∂g̃(c_i)/∂d_j`` (the tip condition that ``TipCondition`` mixes into the zones'
+    equations) of two contacts with zones of 0.03 to 0.4 (elastic and an SLS β = 10 at ζ = 1,
+    both controls) against central differences of the field solved with the zones, steps of
+    1e-6: measured within 2.4e-8 of the largest entry; tolerance 1e-6 (the zone's own far-end
+    term alone is 0.4 of it)."""
+    rheology = Elastic() if zeta == 0 else StandardLinearSolid(beta=10.0)
+    kernel = HalfPlane().prepare(rheology, zeta)
+    shape = NormalizedProfile.of(Sinusoid(amplitude=0.1))
+    edges = np.array([-1.2, -0.35, 0.45, 1.1])
+    mesh = build_mesh(edges, MeshSpec(elements=96, smallest=1e-5))
+    control = {"mean_pressure": 0.05} if load else {"penetration": 0.4}
+    base = solve_fields(mesh, kernel, shape, **control)
+    d = np.array([0.4, 0.03, 0.1, 0.25])
+    stress = 0.8
+
+    def g_of(lengths):
+        f = with_loads(base, kernel, zone_loads(edges, lengths, stress), **control)
+        return tip_gaps(f, kernel, shape, tips(edges, lengths))
+
+    f = with_loads(base, kernel, zone_loads(edges, d, stress), **control)
+    J = tip_gap_jacobian(f, kernel, shape, stress=stress, control=control, columns=np.arange(4))
+    fd = np.empty_like(J)
+    for j in range(4):
+        plus, minus = d.copy(), d.copy()
+        plus[j] += 1e-6
+        minus[j] -= 1e-6
+        fd[:, j] = (g_of(plus) - g_of(minus)) / 2e-6
+    assert np.max(np.abs(J - fd)) <= 1e-6 * np.max(np.abs(fd)), (J, fd)
 
 
 def test_the_fit_rows_are_computed_once_per_mesh():

@@ -115,3 +115,45 @@ def test_a_problem_refuses_a_method_that_is_not_one():
 
     with pytest.raises(ValidationError, match="ContactProblem.method.*Spectral"):
         _wavy(mean_pressure=0.3, method="spectral")
+
+
+def _cohesive(**kw):
+    """A Maugis-Dugdale sinusoid (λ ≈ 1.2, the example scene's law) that the grid applies."""
+    from viscocontact.adhesion import MaugisDugdale
+
+    return ContactProblem(profile=Sinusoid(amplitude=0.05), rheology=Elastic(), solver=Newton(),
+                          adhesion=MaugisDugdale(gamma=2e-5, range=0.005), **kw)
+
+
+def test_the_grid_solves_an_adhesive_scene_the_bem_fails_on():
+    """A BEM held to two residual evaluations without a fallback solver cannot converge: the
+    grid solves the scene instead, its answer is the spectral method's own, and the events say
+    that the BEM ran first and why the grid took over."""
+    from viscocontact.methods.spectral import Spectral
+    from viscocontact.solvers.base import Tolerances
+
+    starved = dict(tolerances=Tolerances(max_evaluations=2), fallback=None, penetration=0.5)
+    assert not _cohesive(method=BEM(), **starved).solve().converged
+    result = _cohesive(method=Auto(), **starved).solve()
+    grid = _cohesive(method=Spectral(tolerance=1e-3), **starved).solve()
+    assert result.converged and result.method == "spectral"
+    assert result.error_estimate <= 1e-3
+    assert result.area == grid.area and result.friction == grid.friction
+    events = result.extras["events"]
+    assert events[0].startswith("method bem: adhesive scene")
+    assert events[1].startswith("method spectral: the bem solve did not converge")
+
+
+def test_without_the_grid_the_bem_failure_is_reported():
+    """The same starved BEM with an energy balance (no law the grid applies), or with the
+    fallback switched off: the BEM's failure is the result, and says that the grid was not
+    tried where it does not apply."""
+    from viscocontact.solvers.base import Tolerances
+
+    starved = dict(tolerances=Tolerances(max_evaluations=2), fallback=None, penetration=0.5)
+    off = _cohesive(method=Auto(spectral_fallback=False), **starved).solve()
+    assert not off.converged and off.method == "bem"
+    energy = _wavy(method=Auto(), adhesion=EnergyBalance(gamma=1e-4), **starved).solve()
+    assert not energy.converged and energy.method == "bem"
+    assert any(e.startswith("the spectral method was not tried: adhesive scene")
+               for e in energy.extras["events"])

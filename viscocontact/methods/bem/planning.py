@@ -82,8 +82,8 @@ def _cohesive_step(problem, spec) -> PlanStep:
     amp = float(problem.profile.amplitude)
     zone, how = cohesive_zones(adh, problem.rheology, float(problem.zeta))
     choice = (f"Maugis-Dugdale zones (σ̃0 = {adh.strength(amp):.4g}, η = {adh.opening(amp):.4g}) "
-              "as known loads beside every edge, lengths from K̃ = 0 by an inner Newton "
-              "iteration, edge residual the tip gap g̃(c) = η")
+              "as known loads beside every edge, lengths from K̃ = W(g̃(c) - η) by an inner "
+              "Newton iteration, edge residual the tip gap g̃(c) = η (so K̃ = 0 at the root)")
     if spec.smallest is not None:
         h = spec.smallest
         where = (f"the edge-clustered mesh's smallest element is {h:.3g} (or {ZONE_CAP:g} of the "
