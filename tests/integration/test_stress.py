@@ -193,9 +193,9 @@ GAMMA_CLOSE = _closing_gamma()      # ≈ 0.0812
     0.0, 0.01, 0.5, 0.95, 0.98, 0.99, 0.995, 1.01, 1.05, 3.0, 30.0])
 def test_gamma_up_to_and_past_closure(fraction):
     """Elastic wavy contact at zero load, Γ̃ = fraction·Γ̃_close: Johnson's area below, full
-    contact above, no contact without adhesion. Just below closure (0.99, 0.995) the first
-    contact jumps past the load maximum onto the branch that is unstable under load control
-    (Ã = 4.3864 at 0.99); the stability check brings the solve back to the stable root."""
+    contact above, no contact without adhesion. Just below closure (0.99, 0.995) the stable root
+    lies close to the load maximum, past which the branch is unstable under load control
+    (Ã = 4.3864 at 0.99): the approach in the load stops at the stable root."""
     Gamma = fraction * GAMMA_CLOSE
     r = _solve(_wavy(mean_pressure=0.0, adhesion=_adhesion(Gamma)))
     assert r.converged, r.message
@@ -206,8 +206,6 @@ def test_gamma_up_to_and_past_closure(fraction):
     else:
         ref = JohnsonWavy(Gamma=Gamma).area_at_pressure(0.0)
         assert not r.full_contact and r.area == pytest.approx(ref, rel=2e-3)
-        if fraction >= 0.99:
-            assert any("unstable under load control" in e for e in r.extras["events"])
 
 
 @FEW
