@@ -84,7 +84,7 @@ def test_an_adhesive_scene_solved_by_auto_is_the_bem_solve():
     assert planned.area == direct.area and planned.friction == direct.friction
 
 
-def test_solver_events_reach_logging(caplog):
+def test_solver_events_reach_logging(caplog, monkeypatch):
     """Each event of a solve is a record of the ``viscocontact.solve`` logger; a solve that
     does not converge warns there too."""
     import logging
@@ -97,13 +97,10 @@ def test_solver_events_reach_logging(caplog):
     assert [m.split("] ", 1)[1] for m in messages[1:]] == events[1:]
     assert all(m.startswith("spectral: [") for m in messages[1:])
     caplog.clear()
-    from viscocontact.solvers.base import Tolerances
-
-    stalled = ContactProblem(method=BEM(),
-                             profile=Sinusoid(amplitude=0.1), rheology=Elastic(), solver=Newton(),
-                             adhesion=EnergyBalance(gamma=1e-4), mean_pressure=0.1,
-                             tolerances=Tolerances(residual=1e-9, max_evaluations=2),
-                             fallback=None)
+    _starve(monkeypatch)
+    stalled = ContactProblem(method=BEM(), profile=Sinusoid(amplitude=0.1), rheology=Elastic(),
+                             solver=Newton(), adhesion=EnergyBalance(gamma=1e-4),
+                             penetration=0.3)
     with caplog.at_level(logging.INFO, logger="viscocontact.solve"):
         out = stalled.solve()
     assert not out.converged
@@ -117,6 +114,28 @@ def test_a_problem_refuses_a_method_that_is_not_one():
         _wavy(mean_pressure=0.3, method="spectral")
 
 
+def _starve(monkeypatch) -> None:
+    """Make the BEM's approach fail (as one that runs out of evaluations does): the state it
+    returns is not converged. The solve's other parts are the real ones."""
+    import numpy as np
+
+    from viscocontact.methods.bem.approach import Approach
+    from viscocontact.methods.bem.state import Outcome, State
+
+    def fails(self, target):
+        return State(outcome=Outcome.NOT_CONVERGED, edges=np.array([-0.5, 0.5]),
+                     residual=1.0, message="edge solve did not converge: starved")
+
+    monkeypatch.setattr(Approach, "run", fails)
+
+
+@pytest.fixture
+def starved(monkeypatch):
+    """A BEM whose approach fails (:func:`_starve`); the scenes' control."""
+    _starve(monkeypatch)
+    return {"penetration": 0.5}
+
+
 def _cohesive(**kw):
     """A Maugis-Dugdale sinusoid (λ ≈ 1.2, the example scene's law) that the grid applies."""
     from viscocontact.adhesion import MaugisDugdale
@@ -125,14 +144,11 @@ def _cohesive(**kw):
                           adhesion=MaugisDugdale(gamma=2e-5, range=0.005), **kw)
 
 
-def test_the_grid_solves_an_adhesive_scene_the_bem_fails_on():
-    """A BEM held to two residual evaluations without a fallback solver cannot converge: the
-    grid solves the scene instead, its answer is the spectral method's own, and the events say
+def test_the_grid_solves_an_adhesive_scene_the_bem_fails_on(starved):
+    """A BEM that fails: the grid solves the scene instead, its answer is the spectral method's own, and the events say
     that the BEM ran first and why the grid took over."""
     from viscocontact.methods.spectral import Spectral
-    from viscocontact.solvers.base import Tolerances
 
-    starved = dict(tolerances=Tolerances(max_evaluations=2), fallback=None, penetration=0.5)
     assert not _cohesive(method=BEM(), **starved).solve().converged
     result = _cohesive(method=Auto(), **starved).solve()
     grid = _cohesive(method=Spectral(tolerance=1e-3), **starved).solve()
@@ -144,13 +160,10 @@ def test_the_grid_solves_an_adhesive_scene_the_bem_fails_on():
     assert events[1].startswith("method spectral: the bem solve did not converge")
 
 
-def test_without_the_grid_the_bem_failure_is_reported():
+def test_without_the_grid_the_bem_failure_is_reported(starved):
     """The same starved BEM with an energy balance (no law the grid applies), or with the
     fallback switched off: the BEM's failure is the result, and says that the grid was not
     tried where it does not apply."""
-    from viscocontact.solvers.base import Tolerances
-
-    starved = dict(tolerances=Tolerances(max_evaluations=2), fallback=None, penetration=0.5)
     off = _cohesive(method=Auto(spectral_fallback=False), **starved).solve()
     assert not off.converged and off.method == "bem"
     energy = _wavy(method=Auto(), adhesion=EnergyBalance(gamma=1e-4), **starved).solve()

@@ -272,13 +272,11 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         solved to ``tolerance``.
     """
     if not isinstance(law, GridLaw):       # a smooth traction law (no tips)
-        from .traction import traction_solve
-        return traction_solve(circulant, heights, law, mean_pressure=mean_pressure,
-                              penetration=penetration, start=start,
-                              start_penetration=start_penetration, tolerance=tolerance,
-                              krylov_tolerance=krylov_tolerance, max_updates=max_updates,
-                              max_iterations=max_iterations, max_sets=max_sets,
-                              workers=workers)
+        return law.solve(circulant, heights, mean_pressure=mean_pressure,
+                         penetration=penetration, start=start,
+                         start_penetration=start_penetration, tolerance=tolerance,
+                         krylov_tolerance=krylov_tolerance, max_updates=max_updates,
+                         max_iterations=max_iterations, max_sets=max_sets, workers=workers)
     lam = circulant.eigenvalues
     r = np.asarray(heights, dtype=float)
     n = r.size

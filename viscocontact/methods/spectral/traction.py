@@ -31,6 +31,7 @@ import attrs
 import numpy as np
 
 from ...errors import ValidationError
+from .cohesive import CohesiveSolution, GridLaw
 from .operator import convolve
 from .solvers import GridSolution, circulant_diagonal, grid_solve, violation
 
@@ -74,6 +75,11 @@ class GridTraction:
     opening: float
     scale: float
 
+    def solve(self, circulant, heights, **options):
+        """The equilibrium of this law on one grid (:func:`traction_solve`; the cohesive
+        solve hands a smooth law over to it)."""
+        return traction_solve(circulant, heights, self, **options)
+
     def tension(self, gap) -> np.ndarray:
         """``σ̃`` at the grid gaps ``gap`` (contact cells: ``gap = 0``)."""
         return np.asarray(self.law(self.amplitude * np.maximum(gap, 0.0)), float) / self.amplitude
@@ -103,8 +109,6 @@ def grid_law(model, amplitude: float):
     :class:`~.cohesive.GridLaw` (Dugdale, by tips) where the model has a cohesive form, a
     :class:`GridTraction` where it has only a traction, None without adhesion or without
     either."""
-    from .cohesive import GridLaw
-
     if model is None or not float(model.work_of_adhesion) > 0:
         return None
     dugdale = model.cohesive_law(amplitude)
@@ -156,7 +160,6 @@ def traction_solve(circulant, heights, law: GridTraction, *, mean_pressure=None,
     :func:`~.cohesive.cohesive_solve`; ``weights`` are the cells' tensions over the peak.
     ``start`` gives the first tension field (the tension of its cells where ``p < 0``);
     ``rows``, ``contact_start`` and ``start_contact`` play no part (the law has no tips)."""
-    from .cohesive import CohesiveSolution
 
     lam = circulant.eigenvalues
     diagonal = circulant_diagonal(lam)
