@@ -271,6 +271,8 @@ def tip_gap_jacobian(fields: FieldSolution, kernel, shape, *, stress: float, con
     out = kernel.influence(c, mesh.left, mesh.right) @ ds - shift[None, :]
     out += stress * _kernel_slopes(kernel, c[:, None] - c[cols][None, :])
     loads = fields.loads
+    if loads is None:
+        raise ValueError("tip_gap_jacobian needs a field solved with its zones (known loads)")
     at = c[cols][:, None]
     contact = (_kernel_slopes(kernel, at - mesh.left[None, :])
                - _kernel_slopes(kernel, at - mesh.right[None, :])) @ fields.sigma

@@ -112,9 +112,9 @@ class Approach:
     def pressed(self, edges, d0: float, target: Control) -> State:
         """An adhesionless contact from its first touch at ``Δ̃ = d0`` (a point: no edge
         motion settles it): its equilibrium is unique, so the path only gives each solve a
-        close start. The first path step's penetration is solved from the first touch, then the
-        branch is followed to the target."""
-        first = Control.penetration_of(d0 + self.options.path_step)
+        close start. The contact just past the first touch is solved from it, then the branch is
+        followed to the target in steps that are halved where the solver fails."""
+        first = Control.penetration_of(d0 + self.options.smallest)
         if not target.is_load and target.value <= first.value:
             return self.eq.solve(edges, target)
         state = self.eq.solve(edges, first)
@@ -240,6 +240,11 @@ class Approach:
                     aim = self.birth_ahead(state, v, bracket)
                 continue
             del eq.log.records[logged:]     # (a step past an event is not on the path)
+            if event == "fold" and not eq.adhesive and abs(v_next - v) > 2.0 * opt.smallest:
+                # an adhesionless branch has no folds: the solver failed on a long step (many
+                # births and merges at once), which a shorter one gets through
+                step = 0.5 * abs(v_next - v) / scale
+                continue
             bracket, aim = (v_next, event, opt.smallest, trial.gap), None
             if event == "fold" and eq.adhesive:
                 aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
