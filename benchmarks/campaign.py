@@ -48,8 +48,10 @@ def _killed(seed: int, seconds: float) -> dict:
             "seconds": round(seconds, 3), "method": "", "power_tolerance": ""}
 
 
-def run(seeds, *, workers: int, time_limit: float, grace: float, progress=print) -> list[dict]:
-    """One record per seed (in seed order), each solved in its own forked process."""
+def run(seeds, *, workers: int, time_limit: float, grace: float, progress=print,
+        save=None) -> list[dict]:
+    """One record per seed (in seed order), each solved in its own forked process; ``save``
+    is called with the records so far after every tenth."""
     ctx = mp.get_context("fork")
     pending = list(seeds)
     running: dict[int, tuple] = {}
@@ -83,7 +85,10 @@ def run(seeds, *, workers: int, time_limit: float, grace: float, progress=print)
                 del running[seed]
                 records[seed] = _record(seed, draw(seed), out)
                 progress(f"seed {seed:4d} {records[seed]['outcome']:14s} "
+                         f"{'pass' if not records[seed]['failures'] else 'FAIL'} "
                          f"{records[seed]['seconds']:7.1f} s  {_label(records[seed])}")
+                if save is not None and len(records) % 10 == 0:
+                    save([records[s] for s in sorted(records)])
         time.sleep(0.05)
     return [records[s] for s in sorted(records)]
 
@@ -141,6 +146,22 @@ def _warm_up() -> None:
         vc.solve(table)
 
 
+def _write(path: Path, records: list[dict], *, workers: int, time_limit: float,
+           wall: float) -> None:
+    """The records and the run's settings as JSON, written whole (a temporary file moved in
+    place)."""
+    from viscocontact import __version__
+
+    head = {"version": __version__, "scenes": len(records), "workers": workers,
+            "time_limit": time_limit, "wall_seconds": round(wall, 1)}
+    lines = ",\n".join(json.dumps(r, ensure_ascii=False, allow_nan=False) for r in records)
+    text = json.dumps(head)[:-1] + ', "records": [\n' + lines + "\n]}\n"   # a record a line
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_suffix(".tmp")
+    tmp.write_text(text, encoding="utf-8")
+    tmp.replace(path)
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--scenes", type=int, default=300)
@@ -153,22 +174,20 @@ def main(argv=None) -> int:
     ap.add_argument("--table", action="store_true", help="print the table of --out and exit")
     args = ap.parse_args(argv)
     if args.table:
-        print(table(json.loads(args.out.read_text())["records"]))
+        print(table(json.loads(args.out.read_text(encoding="utf-8"))["records"]))
         return 0
     _warm_up()
     t0 = time.monotonic()
     seeds = range(args.first_seed, args.first_seed + args.scenes)
-    records = run(seeds, workers=args.workers, time_limit=args.time_limit, grace=args.grace,
-                  progress=lambda s: print(s, flush=True))
-    wall = time.monotonic() - t0
-    from viscocontact import __version__
 
-    data = {"version": __version__, "scenes": len(records), "workers": args.workers,
-            "time_limit": args.time_limit, "wall_seconds": round(wall, 1), "records": records}
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = args.out.with_suffix(".tmp")
-    tmp.write_text(json.dumps(data, indent=0, allow_nan=False) + "\n")
-    tmp.replace(args.out)
+    def save(records):
+        _write(args.out, records, workers=args.workers, time_limit=args.time_limit,
+               wall=time.monotonic() - t0)
+
+    records = run(seeds, workers=args.workers, time_limit=args.time_limit, grace=args.grace,
+                  progress=lambda s: print(s, flush=True), save=save)
+    save(records)
+    wall = time.monotonic() - t0
     print(f"\nwall time {wall:.0f} s on {args.workers} workers\n")
     print(table(records))
     return 0
