@@ -22,10 +22,6 @@ import time
 from collections import defaultdict
 from pathlib import Path
 
-for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS",
-             "VISCOCONTACT_THREADS"):
-    os.environ.setdefault(_var, "1")         # one thread per worker: the workers share the cores
-
 from viscocontact.testing.campaign import describe, draw, run_scene
 
 DEFAULT_OUT = Path(__file__).resolve().parent / "results" / "raw" / "campaign.json"
@@ -176,6 +172,12 @@ def main(argv=None) -> int:
     if args.table:
         print(table(json.loads(args.out.read_text(encoding="utf-8"))["records"]))
         return 0
+    from threadpoolctl import threadpool_limits
+
+    # one thread per worker, the workers share the cores (numba reads its count when loaded)
+    for var in ("NUMBA_NUM_THREADS", "VISCOCONTACT_THREADS"):
+        os.environ.setdefault(var, "1")
+    threadpool_limits(limits=1)
     _warm_up()
     t0 = time.monotonic()
     seeds = range(args.first_seed, args.first_seed + args.scenes)

@@ -53,8 +53,8 @@ def _stiff_rough(beta, zeta, seed):
             "load": {"mean_pressure": 0.3}, "sliding": {"zeta": zeta}}
 
 
-def _passes(table):
-    outcome = run_scene(table, time_limit=LIMIT)
+def _passes(table, limit=LIMIT):
+    outcome = run_scene(table, time_limit=limit)
     assert outcome.passed, (outcome.outcome, outcome.failures)
     return outcome
 
@@ -70,20 +70,22 @@ def test_glassy_rough_energy_balance_says_it_is_outside_the_model():
         assert outcome.outcome == "outside-model" and "outside the model" in outcome.message
 
 
+@pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason=(
     "Maugis-Dugdale zones on a thin free layer at the glassy end: the zones' bounded-stress "
     "equations do not converge in 60 Newton iterations at the first edge set (largest K̃ 64), "
     "so the residual at x0 is not finite and the solve fails (a solver-path failure)"))
 def test_thin_free_layer_maugis_dugdale():
+    """7-30 s, most of it the free layer's kernel tables."""
     _passes(THIN_FREE_LAYER_MD)
 
 
 @pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason=(
-    "rough Maugis-Dugdale contact on a thick confined layer at ζ = 1.4e-3: the edge solve stalls "
-    "and runs past 200 s without an answer"))
+    "rough Maugis-Dugdale contact on a thick confined layer at ζ = 1.4e-3: the solve runs past "
+    "200 s without an answer"))
 def test_confined_rough_maugis_dugdale():
-    _passes(CONFINED_ROUGH_MD)
+    _passes(CONFINED_ROUGH_MD, limit=150.0)
 
 
 @pytest.mark.slow
@@ -94,9 +96,23 @@ def test_wavy_energy_balance_penetration_nonlinear_cg():
     _passes(WAVY_EB_PENETRATION_CG)
 
 
-@pytest.mark.parametrize("beta, zeta, seed", [(600.0, 1e-3, 1)])
+SPECTRAL_ESTIMATE = (
+    "the spectral method converges in 0.3 s, but its power-balance misfit (2.2e-3 of μ) is "
+    "beyond its error estimate (8.4e-4): the estimate does not cover the unresolved relaxation "
+    "at the contact edges")
+STIFF_ROUGH_RUNS_ON = (
+    "the grid solve does not converge at 1024 cells (100 active-set steps, 22 s); the BEM "
+    "from first touch then sees contacts born and detached at every approach step, halves the "
+    "step again and again, and has no answer at 150 s")
+
+
+@pytest.mark.parametrize("beta, zeta, seed", [
+    pytest.param(600.0, 1e-3, 1, marks=pytest.mark.xfail(strict=True, reason=SPECTRAL_ESTIMATE)),
+    pytest.param(5000.0, 0.1, 2, marks=[
+        pytest.mark.slow, pytest.mark.xfail(strict=True, reason=STIFF_ROUGH_RUNS_ON)])])
 def test_stiff_rough_adhesionless(beta, zeta, seed):
-    """Adhesionless rough contact on a stiff solid: once 'contact set still changing after
-    200 restarts' or past 150 s."""
-    outcome = _passes(_stiff_rough(beta, zeta, seed))
+    """Adhesionless rough contact on a stiff solid (β 600-5000, ζ 1e-3 to 0.1): once 'contact
+    set still changing after 200 restarts' or past 150 s."""
+    outcome = run_scene(_stiff_rough(beta, zeta, seed), time_limit=150.0)
+    assert outcome.passed, (outcome.outcome, outcome.failures)
     assert outcome.outcome == "converged" and math.isfinite(outcome.values["friction"])
