@@ -35,7 +35,19 @@ def _child(seed: int, time_limit: float, conn) -> None:
 
 
 def _record(seed: int, table: dict, out: dict) -> dict:
-    return {"seed": seed, "scene": table, **describe(table), **out}
+    """The seed, its drawn parameters (6 digits: ``draw(seed)`` gives them exactly), its
+    component labels and its outcome."""
+    return {"seed": seed, "scene": _rounded(table), **describe(table), **out}
+
+
+def _rounded(value):
+    if isinstance(value, dict):
+        return {k: _rounded(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_rounded(v) for v in value]
+    if isinstance(value, float):
+        return float(f"{value:.6g}")
+    return value
 
 
 def _killed(seed: int, seconds: float) -> dict:
