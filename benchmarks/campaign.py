@@ -35,9 +35,9 @@ def _child(seed: int, time_limit: float, conn) -> None:
 
 
 def _record(seed: int, table: dict, out: dict) -> dict:
-    """The seed, its drawn parameters (6 digits: ``draw(seed)`` gives them exactly), its
-    component labels and its outcome."""
-    return {"seed": seed, "scene": _rounded(table), **describe(table), **out}
+    """The seed, its drawn parameters (6 digits: ``draw(seed)`` gives them exactly) and its
+    outcome."""
+    return {"seed": seed, "scene": _rounded(table), **out}
 
 
 def _rounded(value):
@@ -94,19 +94,25 @@ def run(seeds, *, workers: int, time_limit: float, grace: float, progress=print,
                 records[seed] = _record(seed, draw(seed), out)
                 progress(f"seed {seed:4d} {records[seed]['outcome']:14s} "
                          f"{'pass' if not records[seed]['failures'] else 'FAIL'} "
-                         f"{records[seed]['seconds']:7.1f} s  {_label(records[seed])}")
+                         f"{records[seed]['seconds']:7.1f} s  {_label(draw(seed))}")
                 if save is not None and len(records) % 10 == 0:
                     save([records[s] for s in sorted(records)])
         time.sleep(0.05)
     return [records[s] for s in sorted(records)]
 
 
-def _label(rec: dict) -> str:
-    return " ".join(str(rec.get(g, "")) for g in GROUPS[:5])
+def _label(scene: dict) -> str:
+    labels = describe(scene)
+    return " ".join(labels[g] for g in GROUPS[:5])
+
+
+def _labelled(records: list[dict]) -> list[dict]:
+    return [{**describe(r["scene"]), **r} for r in records]
 
 
 def table(records: list[dict]) -> str:
     """Pass counts, outcomes and time per scene by component."""
+    records = _labelled(records)
     lines = [f"{len(records)} scenes, {sum(not r['failures'] for r in records)} pass; "
              f"outcomes: {dict(_count(r['outcome'] for r in records))}; power balance checked "
              f"against the estimate {sum(r.get('power_tolerance') == 'estimate' for r in records)}"
@@ -162,7 +168,8 @@ def _write(path: Path, records: list[dict], *, workers: int, time_limit: float,
 
     head = {"version": __version__, "scenes": len(records), "workers": workers,
             "time_limit": time_limit, "wall_seconds": round(wall, 1)}
-    lines = ",\n".join(json.dumps(r, ensure_ascii=False, allow_nan=False) for r in records)
+    lines = ",\n".join(json.dumps(r, ensure_ascii=False, allow_nan=False,
+                                  separators=(",", ":")) for r in records)
     text = json.dumps(head)[:-1] + ', "records": [\n' + lines + "\n]}\n"   # a record a line
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_suffix(".tmp")

@@ -187,10 +187,10 @@ class Outcome:
         return not self.failures
 
     def to_dict(self) -> dict[str, Any]:
-        """Plain data, compact: texts cut to 200 characters, numbers to 4 digits."""
-        return {"outcome": self.outcome, "message": self.message[:200],
-                "failures": [f[:200] for f in self.failures],
-                "warnings": [w[:120] for w in self.warnings],
+        """Plain data, compact: texts cut to 160 characters, numbers to 4 digits."""
+        return {"outcome": self.outcome, "message": self.message[:160],
+                "failures": [f[:160] for f in self.failures],
+                "warnings": [w[:100] for w in self.warnings],
                 "seconds": round(self.seconds, 2), "method": self.method,
                 "power_tolerance": self.power_tolerance,
                 **{k: v if v is None else float(f"{v:.4g}") for k, v in self.values.items()}}
@@ -251,11 +251,8 @@ def _power_check(scene, result) -> tuple[list[str], str, dict]:
     values["power_misfit"] = misfit / scale if scale > 0 else 0.0
     values["power_allowed"] = allowed
     if misfit > allowed:
-        return [f"friction μ = {mu:.6g} differs from the dissipated power {balance:.6g} "
-                f"(bulk {bulk:.6g}, edges {edges:.6g}) by {misfit:.3g} "
-                f"({misfit / max(scale, 1e-300):.3g} relative), beyond the {used} tolerance "
-                f"{allowed:.3g}, and the result does not say that it lies outside the model"
-                ], used, values
+        return [f"power balance: μ = {mu:.4g}, dissipated power {balance:.4g}, misfit "
+                f"{misfit:.3g} beyond the {used} tolerance {allowed:.3g}"], used, values
     return [], used, values
 
 
@@ -325,7 +322,7 @@ def judge(scene, result, *, seconds: float = 0.0, warned: tuple[str, ...] = ()) 
     common = dict(message=result.message, warnings=warned, seconds=seconds, method=result.method)
     if not result.converged:
         kind = classify(result.message)
-        failures = () if kind == "scene" else (f"not converged ({kind}): {result.message}"[:300],)
+        failures = () if kind == "scene" else (f"not converged ({kind})",)   # the message says why
         return Outcome(outcome=kind, failures=failures, **common)
     failures, used, values = check(scene, result)
     outside = bool(result.extras.get("outside_model"))

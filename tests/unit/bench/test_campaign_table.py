@@ -3,9 +3,12 @@ from campaign import GROUPS, table
 
 
 def _record(seed, adhesion, outcome, failures, seconds):
-    return {"seed": seed, "adhesion": adhesion, "rheology": "elastic", "kernel": "half-plane",
-            "control": "mean_pressure", "solver": "newton", "profile": "sinusoid",
-            "method": "bem", "outcome": outcome, "failures": failures, "seconds": seconds,
+    scene = {"profile": {"kind": "sinusoid", "amplitude": 0.1}, "rheology": {"kind": "elastic"},
+             "kernel": {"kind": "half-plane"}, "adhesion": {"kind": adhesion},
+             "load": {"mean_pressure": 0.3}, "sliding": {"zeta": 1.0},
+             "solver": {"kind": "newton"}}
+    return {"seed": seed, "scene": scene, "method": "bem", "outcome": outcome,
+            "failures": failures, "seconds": seconds,
             "power_tolerance": "fallback" if outcome == "converged" else ""}
 
 
