@@ -130,8 +130,9 @@ def table(records: list[dict]) -> str:
             secs = [r["seconds"] for r in rs]
             other = len(rs) - sum(n[k] for k in ("converged", "outside-model", "scene",
                                                  "refused", "path", "time-limit"))
+            passed = sum(not r["failures"] for r in rs)
             lines.append(
-                f"| {group:<14} | {value:<22} | {len(rs):6d} | {sum(not r['failures'] for r in rs):4d} "
+                f"| {group:<14} | {value:<22} | {len(rs):6d} | {passed:4d} "
                 f"| {n['converged']:4d} | {n['outside-model']:7d} | {n['scene']:5d} | "
                 f"{n['refused']:7d} | {n['path']:4d} | {n['time-limit']:5d} | {other:5d} | "
                 f"{statistics.median(secs):8.2f} | {max(secs):5.1f} |")

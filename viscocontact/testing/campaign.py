@@ -46,7 +46,8 @@ import attrs
 import numpy as np
 
 __all__ = ["RANGES", "draw", "describe", "run_scene", "check", "classify", "Outcome",
-           "LOAD_TOLERANCE", "GAP_TOLERANCE", "POWER_FALLBACK", "FRICTION_ZERO", "SCENE_REASONS", "PATH_REASONS"]
+           "LOAD_TOLERANCE", "GAP_TOLERANCE", "POWER_FALLBACK", "FRICTION_ZERO", "SCENE_REASONS",
+           "PATH_REASONS"]
 
 #: The drawn ranges (dimensionless groups of eq. 4.17; ``docs/scene.md``). Log-uniform where
 #: the range spans decades.
