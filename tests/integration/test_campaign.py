@@ -1,0 +1,52 @@
+"""A short, fixed sample of the randomised campaign (``viscocontact.testing.campaign``): every
+drawn scene converges or ends for a property of the scene, and every converged result passes
+its identities (load met, no interpenetration, friction against the sliding on a lossy solid,
+friction equal to the dissipated power within the result's error estimate).
+
+The full campaign (300 scenes over every component kind and range, with its table by
+component) is ``benchmarks/campaign.py`` (``docs/verification.md``, "Randomised campaign").
+The seeds here are not chosen by outcome: for each adhesion model they are the first seeds of
+the campaign whose scene solved in under 3 s there (three without adhesion, three with the
+energy balance, two with Maugis-Dugdale). The ones that fail are kept as strict xfails naming
+the defect they show.
+"""
+import pytest
+
+from viscocontact.testing.campaign import describe, draw, run_scene
+
+# A limit far past these scenes' solve times (0.3-1.8 s), so that a scene that runs away fails
+# instead of holding the suite.
+LIMIT = 60.0
+
+SPECTRAL_LOW_ZETA = (
+    "the spectral method's error estimate (5e-4 to 8e-4) does not cover its power-balance "
+    "misfit on a standard linear solid at small ζ (friction against bulk dissipation: 4.3e-2 "
+    "at ζ = 2.7e-6, 8.1e-3 at 9.3e-4, 1.2e-3 at 8.6e-5): the grid does not resolve the "
+    "relaxation at the contact edges, and the estimate compares two grids that both miss it")
+FULL_CONTACT_BELOW_CLOSING = (
+    "the BEM ends in full contact under penetration control at Δ̃ = 0.446, although full "
+    "contact on an incompressible solid holds only at Δ̃ = 1, and says 'a larger one cannot be "
+    "imposed'")
+MD_ZONES_AT_X0 = (
+    "the Maugis-Dugdale zones' bounded-stress equations do not converge in 60 Newton "
+    "iterations at the first edge set, so the residual at x0 is not finite and the solve "
+    "fails (a solver-path failure)")
+
+SEEDS = [
+    pytest.param(0, marks=pytest.mark.xfail(strict=True, reason=SPECTRAL_LOW_ZETA)),
+    pytest.param(7, marks=pytest.mark.xfail(strict=True, reason=SPECTRAL_LOW_ZETA)),
+    pytest.param(12, marks=pytest.mark.xfail(strict=True, reason=SPECTRAL_LOW_ZETA)),
+    31,
+    pytest.param(56, marks=pytest.mark.xfail(strict=True, reason=FULL_CONTACT_BELOW_CLOSING)),
+    63,
+    pytest.param(3, marks=pytest.mark.xfail(strict=True, reason=MD_ZONES_AT_X0)),
+    pytest.param(8, marks=pytest.mark.xfail(strict=True, reason=MD_ZONES_AT_X0)),
+]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_drawn_scene_passes_its_checks(seed):
+    table = draw(seed)
+    outcome = run_scene(table, time_limit=LIMIT)
+    assert outcome.passed, (describe(table), outcome.outcome, outcome.failures)
+    assert outcome.outcome in ("converged", "outside-model", "scene", "refused")
