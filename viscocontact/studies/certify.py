@@ -72,20 +72,19 @@ def certification(problem, spec, result) -> dict[str, Any]:
     A speed ramp's finer run goes on even when the point failed, so that the certifying chain
     continues with the next point.
     """
-    from .history import SPEED_RAMP, history
+    from .history import SpeedRamp, history
     from .point import _Path, _ramped, _solve_at
 
     out = dict(CERTIFY_COLUMNS)
     fine_problem = finer(problem)
-    ramped = spec.history.get("name") == SPEED_RAMP
-    if not ramped and not result.converged:
+    stated = history(dict(spec.history))
+    if not isinstance(stated, SpeedRamp) and not result.converged:
         return out | {"note": ""}
     try:
-        if ramped:
+        if isinstance(stated, SpeedRamp):
             path = _Path()
-            ramp = history(dict(spec.history)).refined(REFINEMENT)
-            fine = _ramped(fine_problem, ramp, attrs.evolve(spec, ramp=spec.certified_ramp),
-                           path)
+            fine = _ramped(fine_problem, stated.refined(REFINEMENT),
+                           attrs.evolve(spec, ramp=spec.certified_ramp), path)
             out["certified_ramp"] = path.state
         else:
             fine = _solve_at(fine_problem, None, None)

@@ -35,8 +35,6 @@ from .point import RAMP, PointSpec, has_contact
 __all__ = ["Sweep", "log_zetas"]
 
 CONTROLS = ("mean_pressure", "penetration")
-#: The smallest ``Discretization.path_step`` (its validator's bound).
-MIN_PATH_STEP = 1e-4
 ADHESIVE, ADHESIONLESS = "adhesive", "adhesionless"
 
 
@@ -115,8 +113,8 @@ class Sweep(Study):
         Also solve every adhesive point under the same history with a tenth of its tolerance
         (the approach's ``path_step``, the speed ramp's ``tolerance``) and record whether the
         two agree (:mod:`~viscocontact.studies.certify`): the columns ``certified``,
-        ``certified_area``, ``certified_friction``. Roughly doubles the cost of the adhesive
-        points; off by default.
+        ``certified_area``, ``certified_friction``. Costs 2-3 times the adhesive points; off by
+        default.
 
     Examples
     --------
@@ -160,11 +158,14 @@ class Sweep(Study):
         if _is_areal(self.scene) and self.certify:
             raise ValidationError("sweep.certify", True, "False for an areal scene (its points "
                                   "are not reached by a continuation with a step)")
-        step = (self.discretization or Discretization()).path_step
-        if self.certify and step / REFINEMENT < MIN_PATH_STEP:
-            raise ValidationError("sweep.discretization.path_step", step,
-                                  f">= {MIN_PATH_STEP * REFINEMENT:g} with certify=True (a tenth "
-                                  f"of it certifies the points; path_step >= {MIN_PATH_STEP:g})")
+        if self.certify:                # the certifying step must be a step the mesh allows
+            disc = self.discretization or Discretization()
+            try:
+                attrs.evolve(disc, path_step=disc.path_step / REFINEMENT)
+            except ValidationError as exc:
+                raise ValidationError("sweep.discretization.path_step", disc.path_step,
+                                      f"a step whose tenth is {exc.allowed} (certify=True "
+                                      "certifies the points with a tenth of it)") from None
         if _is_areal(self.scene):
             if isinstance(self.history, SpeedRamp):
                 raise ValidationError("sweep.history", self.history.params(),

@@ -14,7 +14,7 @@ import pytest
 from viscocontact.errors import CertificationWarning, ValidationError
 from viscocontact.plot_marks import JUMP_LABEL, RAMP_LABEL, UNCERTIFIED_LABEL
 from viscocontact.plots import draw_sweep, plot_study
-from viscocontact.studies import Sweep, certify, load_study, run, storage
+from viscocontact.studies import Sweep, certify, load_study, resume, run, storage
 from viscocontact.studies.certify import (AREA_TOLERANCE, CERTIFY_COLUMNS, FRICTION_TOLERANCE,
                                           agrees)
 
@@ -66,10 +66,17 @@ def test_certification_leaves_the_points_alone(tmp_path, adhesive, mesh, certifi
     assert not plain.points["certified"].any() and "certify" not in plain.params
 
 
-def test_a_speed_ramp_is_certified_by_a_second_finer_ramp(tmp_path, adhesive, mesh):
+def test_a_speed_ramp_is_certified_by_a_second_finer_ramp(tmp_path, adhesive, mesh, identical):
     ramp = {"name": "speed-ramp", "tolerance": 0.05}
     data = run(Sweep(scene=adhesive, zetas=[1.0, 1.5, 2.0], discretization=mesh, pair=False,
                      history=ramp, certify=True), tmp_path / "r.h5", progress=None)
+    # stopped after its second point, the study resumes both paths where they stood
+    cut = tmp_path / "cut.h5"
+    cut.write_bytes(data.path.read_bytes())
+    with h5py.File(cut, "r+") as f:
+        f["points"].attrs["count"] = 2
+        f.attrs["complete"] = False
+    identical(resume(cut, progress=None).points, data.points)
     p = data.points
     assert p["converged"].all() and p["certified"].all()
     # the chain's first point carries both paths' states: the ramp's and the tenfold finer one
