@@ -18,7 +18,7 @@ Adhesionless equilibria are unique (their history does not change them): they ar
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping
 
 import attrs
 
@@ -38,6 +38,10 @@ FRICTION_FLOOR = 0.01
 #: The record columns of a certification, with their values for a point not certified.
 CERTIFY_COLUMNS: dict[str, Any] = {"certified": False, "certified_area": math.nan,
                                    "certified_friction": math.nan, "certified_ramp": ""}
+
+
+#: ``reach(problem, history, ramp_state) -> (result, ramp_state)`` (:func:`certification`).
+Reach = Callable[[Any, Any, str], tuple[Any, str]]
 
 
 def agrees(area: float, friction: float, fine_area: float, fine_friction: float) -> bool:
@@ -65,29 +69,24 @@ def finer(problem):
         disc, path_step=disc.path_step / REFINEMENT))
 
 
-def certification(problem, spec, result) -> dict[str, Any]:
+def certification(problem, spec, result, reach: Reach) -> dict[str, Any]:
     """The certification columns of a point (``result`` of ``problem``, reached under
     ``spec.history``) and ``note``: why it is not certified (empty when it is).
 
-    A speed ramp's finer run goes on even when the point failed, so that the certifying chain
-    continues with the next point.
+    ``reach(problem, history, ramp_state)`` is ``(result, state)``: the point of ``problem``
+    reached under ``history`` (a speed ramp continued from ``ramp_state``, empty for the
+    chain's first point) and the ramp's state after it. A speed ramp's finer run goes on even
+    when the point failed, so that the certifying chain continues with the next point.
     """
     from .history import SpeedRamp, history
-    from .point import _Path, _ramped, _solve_at
 
     out = dict(CERTIFY_COLUMNS)
-    fine_problem = finer(problem)
     stated = history(dict(spec.history))
     if not isinstance(stated, SpeedRamp) and not result.converged:
         return out | {"note": ""}
+    tighter = stated.refined(REFINEMENT) if isinstance(stated, SpeedRamp) else stated
     try:
-        if isinstance(stated, SpeedRamp):
-            path = _Path()
-            fine = _ramped(fine_problem, stated.refined(REFINEMENT),
-                           attrs.evolve(spec, ramp=spec.certified_ramp), path)
-            out["certified_ramp"] = path.state
-        else:
-            fine = _solve_at(fine_problem, None, None)
+        fine, out["certified_ramp"] = reach(finer(problem), tighter, spec.certified_ramp)
     except Exception as exc:      # the point stands; its certification says why it failed
         return out | {"note": f"not certified: the finer run raised {type(exc).__name__}: {exc}"}
     if not result.converged:

@@ -13,6 +13,7 @@ A point that raises is not lost: its record has ``status = "error"`` and the exc
 from __future__ import annotations
 
 import collections
+import functools
 import json
 import math
 import threading
@@ -251,8 +252,21 @@ def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
     problem = ContactProblem.from_scene(Scene.from_dict(scene), **options)
     result, started_from, path = _reached(problem, spec, initial)
     if spec.certify:
-        path.certification = certification(problem, spec, result)
+        path.certification = certification(problem, spec, result,
+                                           functools.partial(_reached_again, spec))
     return result, started_from, path
+
+
+def _reached_again(spec: PointSpec, problem, stated, ramp_state: str):
+    """``(result, ramp state)``: the point of ``problem`` (a finer one) reached under the
+    history ``stated``, a speed ramp continued from ``ramp_state``; for a certification."""
+    from .history import SpeedRamp
+
+    if isinstance(stated, SpeedRamp):
+        path = _Path()
+        result = _ramped(problem, stated, attrs.evolve(spec, ramp=ramp_state), path)
+        return result, path.state
+    return _solve_at(problem, None, None), ""
 
 
 def _reached(problem, spec: PointSpec, initial):
