@@ -55,6 +55,10 @@ DESCRIPTIONS = {
     "target": "the imposed value of the controlled load (p̃∞ or Δ̃)",
     "gamma": "γ̃, dimensionless work of adhesion (0: adhesionless)",
     "seconds": "wall time of the point (s)",
+    "certified": "the point agrees with its history run with a tenth of the tolerance "
+                 "(Sweep certify; False: not certified or not run)",
+    "certified_area": "Ã of the certifying run (a tenth of the tolerance; NaN: not run)",
+    "certified_friction": "μ of the certifying run (a tenth of the tolerance; NaN: not run)",
 }
 
 
