@@ -81,6 +81,11 @@ class ModelValidityWarning(ViscoContactWarning):
     below 3: infinitely short-range adhesion does not hold)."""
 
 
+class CertificationWarning(ViscoContactWarning):
+    """A study point does not agree with the same point reached with a tenth of its history's
+    tolerance (``Sweep(certify=True)``): it is not converged in the continuation's step."""
+
+
 def _internal(frame) -> bool:
     """Whether a frame runs viscocontact's or attrs' code (``attrs.evolve``, generated
     ``__init__``)."""

@@ -2,7 +2,8 @@
 
 * a sweep: contact area Ã and reduced friction μ/√m2 against ζ (thesis Figs. 4.7, 4.10),
   adhesive solid, adhesionless dashed, one colour per load; with realizations the mean and its
-  confidence band;
+  confidence band; points reached through a jump, the speed ramp's events and points that failed
+  their certification are marked (:mod:`~viscocontact.plot_marks`);
 * a cycle: p̃∞ and Ã against Δ̃ along each approach-retraction path (Fig. 4.8), approach solid,
   retraction dashed, detachment marked ×; with several ζ also the toughness T̃ against ζ (Fig. 4.9).
 
@@ -17,6 +18,8 @@ from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
+
+from .plot_marks import draw_marks
 
 ZETA_LABEL = "ζ = q0 V τ"
 
@@ -166,6 +169,7 @@ def plot_sweep(data, out: Path, prefix: str) -> list[Path]:
                 if realizations:
                     ax.fill_between(zetas, band.lower[iv, il], band.upper[iv, il], color=color,
                                     alpha=0.2, lw=0)
+        draw_marks(ax, data, key, colors)
         _xscale(ax, zetas)
         ax.set_xlabel(ZETA_LABEL)
         ax.set_ylabel(ylabel)
@@ -247,7 +251,7 @@ def _pressure_at(points, penetration: float) -> float:
 
 # ---- thesis figure layouts (Figs. 4.7-4.10 and a single solution) -------------------------------
 def draw_sweep(ax, data, quantity: str, *, label: str = "", colors=None, marker: str = "o",
-               variants=None) -> None:
+               variants=None, marks: bool = True) -> None:
     """Draw one sweep's ``quantity`` against ζ on ``ax`` the thesis's way.
 
     Adhesive curves solid, adhesionless dashed, one colour per load (``colors[i]`` for the i-th
@@ -267,6 +271,9 @@ def draw_sweep(ax, data, quantity: str, *, label: str = "", colors=None, marker:
     marker : str
     variants : sequence of str, optional
         Which of ``"adhesive"``/``"adhesionless"`` to draw (default: all in the file).
+    marks : bool
+        Mark how the points were reached (:func:`~viscocontact.plot_marks.draw_marks`: jumps,
+        the speed ramp's events, failed certifications).
     """
     axes = data.axes()
     zetas = np.asarray(axes["zeta"])
@@ -288,6 +295,8 @@ def draw_sweep(ax, data, quantity: str, *, label: str = "", colors=None, marker:
             if several:
                 ax.fill_between(zetas, band.lower[iv, il], band.upper[iv, il], color=color,
                                 alpha=0.15, lw=0)
+    if marks:
+        draw_marks(ax, data, quantity, colors, variants=variants)
     _xscale(ax, zetas)
     ax.set_xlabel(ZETA_LABEL)
     ax.grid(alpha=0.3)

@@ -32,6 +32,8 @@ class WavyStudy:
         p̃∞.
     zetas : tuple of float
         Dimensionless speeds.
+    certify : bool
+        Certify every adhesive point (:class:`~viscocontact.studies.Sweep` ``certify``).
     """
 
     amplitude: float = 0.1
@@ -39,6 +41,7 @@ class WavyStudy:
     beta: float = 10.0
     mean_pressure: float = 0.1
     zetas: tuple = tuple(np.logspace(-4, 3, 15).round(10))
+    certify: bool = False
 
     def scene(self):
         """The adhesive base scene (Newton solver)."""
@@ -57,7 +60,8 @@ class WavyStudy:
         first touch at its own ζ, adhesive and adhesionless."""
         from .studies import Sweep
 
-        return Sweep(scene=self.scene(), zetas=[float(z) for z in self.zetas], pair=True)
+        return Sweep(scene=self.scene(), zetas=[float(z) for z in self.zetas], pair=True,
+                     certify=self.certify)
 
     def run(self, out=".", *, workers: int = 1, progress=sys.stderr) -> list[Path]:
         """Compute the study into ``out/study.h5`` (replacing it) and draw it; the files written."""

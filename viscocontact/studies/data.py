@@ -55,6 +55,10 @@ DESCRIPTIONS = {
     "target": "the imposed value of the controlled load (p̃∞ or Δ̃)",
     "gamma": "γ̃, dimensionless work of adhesion (0: adhesionless)",
     "seconds": "wall time of the point (s)",
+    "certified": "the point agrees with its history run with a tenth of the tolerance "
+                 "(Sweep certify; False: not certified or not run)",
+    "certified_area": "Ã of the certifying run (a tenth of the tolerance; NaN: not run)",
+    "certified_friction": "μ of the certifying run (a tenth of the tolerance; NaN: not run)",
 }
 
 
@@ -212,8 +216,17 @@ class StudyData:
         self._require("sweep", "StudyData.table")
         if name not in self.points or name in ("edges",):
             raise ValidationError("name", name, f"a numeric column, one of {list(QUANTITIES)}")
+        rows = self.rows(converged_only)
+        out = np.full(rows.shape, np.nan)
+        out[rows >= 0] = np.asarray(self.points[name], dtype=float)[rows[rows >= 0]]
+        return out
+
+    def rows(self, converged_only: bool = True) -> np.ndarray:
+        """The row of each point of a sweep on the grid ``(variant, load, seed, zeta)`` of
+        :meth:`axes` (-1: not computed, or not converged unless ``converged_only`` is False)."""
+        self._require("sweep", "StudyData.rows")
         ax = self.axes()
-        out = np.full(tuple(len(v) for v in ax.values()), np.nan)
+        out = np.full(tuple(len(v) for v in ax.values()), -1, dtype=np.int64)
         index = {key: {v: i for i, v in enumerate(values)} for key, values in ax.items()}
         p = self.points
         for row in range(len(self)):
@@ -223,7 +236,7 @@ class StudyData:
                 at = tuple(index[key][p[key][row].item()] for key in ax)
             except KeyError:
                 continue
-            out[at] = float(p[name][row])
+            out[at] = row
         return out
 
     def band(self, name: str, confidence: float = 0.95) -> Band:

@@ -68,7 +68,7 @@ class SpeedRamp:
         prediction of every edge lies within ``tolerance`` of that contact's half-width of the
         converged edge, and a change of the contact set (a birth, a merge, a detachment, a
         closure or an opening) is located in ζ to within ``tolerance`` decades. Its tenth
-        certifies a result (:func:`~viscocontact.studies.ramp.certify`).
+        certifies a result (:mod:`~viscocontact.studies.certify`).
     largest_step : float
         Largest step in decades of ζ, in ``(0, 2]``.
     """

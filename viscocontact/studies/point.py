@@ -13,6 +13,7 @@ A point that raises is not lost: its record has ``status = "error"`` and the exc
 from __future__ import annotations
 
 import collections
+import functools
 import json
 import math
 import threading
@@ -23,6 +24,7 @@ import attrs
 import numpy as np
 
 from ..errors import TimeLimitExceeded
+from .certify import CERTIFY_COLUMNS
 
 #: Record columns written for every point: name -> kind (``int``, ``float``, ``bool``, ``str`` or
 #: ``edges``, a flattened ``[X̃_start, X̃_end, ...]`` array of variable length).
@@ -49,6 +51,11 @@ COLUMNS: dict[str, str] = {
     "friction_dissipation": "float", "patch_mean_area": "float", "patch_largest_area": "float",
     "patch_elongation": "float", "patch_orientation": "float", "patch_alignment": "float",
     "percolating": "int", "cells_per_zone": "float", "grid": "str", "patch_areas": "str",
+    # a study with certify=True (studies.certify): whether the point agrees with the same point
+    # under its history with a tenth of the tolerance, that run's Ã and μ (NaN: not certified)
+    # and a certifying speed ramp's path state
+    "certified": "bool", "certified_area": "float", "certified_friction": "float",
+    "certified_ramp": "str",
 }
 
 #: Columns added after the first study-file format, with the value a file written before them
@@ -60,11 +67,12 @@ LATER_COLUMNS: dict[str, Any] = {"method": "", "error_estimate": float("nan"), "
                                      "friction_dissipation", "patch_mean_area",
                                      "patch_largest_area", "patch_elongation",
                                      "patch_orientation", "patch_alignment", "cells_per_zone")},
-                                 "percolating": -1, "grid": "", "patch_areas": "[]"}
+                                 "percolating": -1, "grid": "", "patch_areas": "[]",
+                                 **CERTIFY_COLUMNS}
 
 #: The columns only an areal scene fills.
-AREAL_COLUMNS = tuple(k for k in LATER_COLUMNS if k not in ("method", "error_estimate",
-                                                            "history", "events", "ramp"))
+AREAL_COLUMNS = tuple(k for k in LATER_COLUMNS if k not in (
+    "method", "error_estimate", "history", "events", "ramp", *CERTIFY_COLUMNS))
 
 #: Columns that depend on the machine's speed, not on the numerics (left out of comparisons).
 TIMING_COLUMNS = ("seconds",)
@@ -111,6 +119,11 @@ class PointSpec:
     ramp : str
         The speed ramp's path state after the chain's previous point (JSON of
         :class:`~viscocontact.studies.ramp.RampState`; empty for the chain's first point).
+    certify : bool
+        Also solve the point under its history with a tenth of the tolerance
+        (:mod:`~viscocontact.studies.certify`).
+    certified_ramp : str
+        The certifying speed ramp's path state after the chain's previous point.
     """
 
     chain: int
@@ -122,6 +135,8 @@ class PointSpec:
     labels: Mapping[str, Any] = attrs.field(factory=dict)
     history: Mapping[str, Any] = attrs.field(factory=lambda: {"name": "approach"})
     ramp: str = ""
+    certify: bool = False
+    certified_ramp: str = ""
 
 
 def solve_point(scene: Mapping[str, Any], spec: PointSpec,
@@ -171,6 +186,12 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     # births, merges, closure: ``extras["path_events"]`` of the BEM)
     events = path.events or list(result.extras.get("path_events", []))
     record.update(events=json.dumps(events), ramp=path.state)
+    if path.certification:
+        certification = dict(path.certification)
+        note = certification.pop("note")
+        record.update(certification)
+        if note:
+            result = attrs.evolve(result, message=f"{result.message}; {note}")
     out = result.to_dict()
     if "surface" in scene:
         from ..areal.report import areal_fields, areal_quantities
@@ -198,7 +219,7 @@ def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
         "method": "", "history": str(spec.history.get("name", "")), "events": "[]", "ramp": "",
         "n_contacts": 0, "full_contact": False, "iterations": 0, "function_evaluations": 0,
         "edges": np.zeros(0), "fields": None,
-        **{k: v for k, v in LATER_COLUMNS.items() if k in AREAL_COLUMNS}}
+        **{k: v for k, v in LATER_COLUMNS.items() if k in AREAL_COLUMNS}, **CERTIFY_COLUMNS}
     for key, kind in COLUMNS.items():
         if kind == "float" and key not in record:
             record[key] = np.nan
@@ -209,22 +230,49 @@ def _skeleton(scene: Mapping[str, Any], spec: PointSpec) -> dict[str, Any]:
 @attrs.define
 class _Path:
     """What a point's solve leaves for the record besides its result: the events met since the
-    chain's previous point and the speed ramp's state (JSON; empty for the approach)."""
+    chain's previous point, the speed ramp's state (JSON; empty for the approach) and the
+    certification's columns (:func:`~viscocontact.studies.certify.certification`; empty when
+    the point is not certified)."""
 
     events: list = attrs.Factory(list)
     state: str = ""
+    certification: dict = attrs.Factory(dict)
 
 
 def _solve(scene: Mapping[str, Any], spec: PointSpec, initial):
-    """``(result, started_from, path)`` of one point under its history."""
+    """``(result, started_from, path)`` of one point under its history (and its certification
+    when ``spec.certify``)."""
     from ..problem import ContactProblem, Discretization
     from ..scene import Scene
-    from .history import SPEED_RAMP, history
+    from .certify import certification
 
     options = {}
     if spec.discretization:
         options["discretization"] = Discretization(**spec.discretization)
     problem = ContactProblem.from_scene(Scene.from_dict(scene), **options)
+    result, started_from, path = _reached(problem, spec, initial)
+    if spec.certify:
+        path.certification = certification(problem, spec, result,
+                                           functools.partial(_reached_again, spec))
+    return result, started_from, path
+
+
+def _reached_again(spec: PointSpec, problem, stated, ramp_state: str):
+    """``(result, ramp state)``: the point of ``problem`` (a finer one) reached under the
+    history ``stated``, a speed ramp continued from ``ramp_state``; for a certification."""
+    from .history import SpeedRamp
+
+    if isinstance(stated, SpeedRamp):
+        path = _Path()
+        result = _ramped(problem, stated, attrs.evolve(spec, ramp=ramp_state), path)
+        return result, path.state
+    return _solve_at(problem, None, None), ""
+
+
+def _reached(problem, spec: PointSpec, initial):
+    """``(result, started_from, path)`` of the point of ``problem`` under its history."""
+    from .history import SPEED_RAMP, history
+
     path = _Path()
     if spec.history.get("name") == SPEED_RAMP:
         result = _ramped(problem, history(dict(spec.history)), spec, path)

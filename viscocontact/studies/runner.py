@@ -100,9 +100,10 @@ def _compute(study: Study, path: Path, pool, *, resume: bool, overwrite: bool,
                 for handle in pool.wait(list(pending)):
                     chain = pending.pop(handle)
                     record = handle.result()
-                    storage.append(path, record)
+                    row = storage.append(path, record)
                     record.pop("fields", None)
                     records[chain.index].append(record)
+                    _warn_uncertified(study, record, row)
                     total = sum(study.expected_points(c, records[c.index]) for c in chains)
                     bar.update(total=total, note=_note(record))
                     submit(chain)
@@ -110,6 +111,20 @@ def _compute(study: Study, path: Path, pool, *, resume: bool, overwrite: bool,
             bar.close()
         storage.set_complete(path, True)
         return load_study(path)
+
+
+def _warn_uncertified(study: Study, record, row: int) -> None:
+    """A :class:`~viscocontact.errors.CertificationWarning` for a point that failed its
+    certification (its message says by how much)."""
+    from ..errors import CertificationWarning, warn_user
+    from .certify import failed
+
+    if failed(record, getattr(study, "certify", False)):
+        message = str(record["message"])
+        why = message[message.find("not certified"):] if "not certified" in message else ""
+        warn_user(f"the {record['variant']} point at ζ = {record['zeta']:.6g}, "
+                  f"{record['control']} = {record['target']:.6g} (row {row}) is "
+                  f"{why or 'not certified'}", CertificationWarning)
 
 
 def _note(record) -> str:

@@ -28,6 +28,7 @@ from ..problem import Discretization
 from ..scene import Scene
 from .base import (Chain, Study, adhesion_gamma, check_scene, int_list, log_zetas, real_list,
                    scene_variant, secant_start, starting_point)
+from .certify import REFINEMENT
 from .history import Approach, SpeedRamp, history
 from .point import RAMP, PointSpec, has_contact
 
@@ -108,6 +109,12 @@ class Sweep(Study):
         Store pressure, displacement and gap of every point.
     discretization : Discretization or dict, optional
         Mesh of every solve (default :class:`~viscocontact.problem.Discretization()`).
+    certify : bool
+        Also solve every adhesive point under the same history with a tenth of its tolerance
+        (the approach's ``path_step``, the speed ramp's ``tolerance``) and record whether the
+        two agree (:mod:`~viscocontact.studies.certify`): the columns ``certified``,
+        ``certified_area``, ``certified_friction``. Costs 2-3 times the adhesive points; off by
+        default.
 
     Examples
     --------
@@ -145,8 +152,20 @@ class Sweep(Study):
     history: Approach | SpeedRamp = attrs.field(factory=Approach, converter=_history)
     fields: bool = attrs.field(default=False, converter=bool)
     discretization: Discretization | None = attrs.field(default=None, converter=_discretization)
+    certify: bool = attrs.field(default=False, converter=bool)
 
     def __attrs_post_init__(self):
+        if _is_areal(self.scene) and self.certify:
+            raise ValidationError("sweep.certify", True, "False for an areal scene (its points "
+                                  "are not reached by a continuation with a step)")
+        if self.certify:                # the certifying step must be a step the mesh allows
+            disc = self.discretization or Discretization()
+            try:
+                attrs.evolve(disc, path_step=disc.path_step / REFINEMENT)
+            except ValidationError as exc:
+                raise ValidationError("sweep.discretization.path_step", disc.path_step,
+                                      f"a step whose tenth is {exc.allowed} (certify=True "
+                                      "certifies the points with a tenth of it)") from None
         if _is_areal(self.scene):
             if isinstance(self.history, SpeedRamp):
                 raise ValidationError("sweep.history", self.history.params(),
@@ -183,7 +202,9 @@ class Sweep(Study):
                 "seeds": None if self.seeds is None else list(self.seeds), "pair": self.pair,
                 "history": self.history.params(), "fields": self.fields,
                 "discretization": (None if self.discretization is None
-                                   else attrs.asdict(self.discretization))}
+                                   else attrs.asdict(self.discretization)),
+                # only when on: a file written before certification is the same study
+                **({"certify": True} if self.certify else {})}
 
     @classmethod
     def from_params(cls, scene, params: Mapping[str, Any]) -> "Sweep":
@@ -241,9 +262,11 @@ class Sweep(Study):
         scene = scene_variant(chain.scene, zeta=chain.zetas[k])
         target = chain.labels["load"] if self.control == "penetration" else None
         ramped = chain.labels["variant"] == ADHESIVE and isinstance(self.history, SpeedRamp)
-        ramp, anchor = "", None
+        ramp, anchor, fine_ramp = "", None, ""
         if ramped:
             ramp = next((str(r["ramp"]) for r in reversed(records) if r.get("ramp")), "")
+            fine_ramp = next((str(r["certified_ramp"]) for r in reversed(records)
+                              if r.get("certified_ramp")), "")
         elif chain.labels["variant"] == ADHESIONLESS:
             anchor = next((r for r in reversed(records) if has_contact(r)), None)
         started_from, initial = starting_point(anchor, target)
@@ -254,6 +277,8 @@ class Sweep(Study):
             initial = initial if predicted is None else predicted
         spec = PointSpec(chain=chain.index, step=k, phase="sweep", started_from=started_from,
                          history=self.history.params(), ramp=ramp,
+                         certify=self.certify and chain.labels["variant"] == ADHESIVE,
+                         certified_ramp=fine_ramp,
                          fields=self.fields, labels=dict(chain.labels),
                          discretization=(None if self.discretization is None
                                          else attrs.asdict(self.discretization)))

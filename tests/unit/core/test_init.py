@@ -40,6 +40,7 @@ HOMES = {
     "PluginError": "viscocontact.errors", "ConvergenceError": "viscocontact.errors",
     "TimeLimitExceeded": "viscocontact.errors", "ViscoContactWarning": "viscocontact.errors",
     "PluginWarning": "viscocontact.errors", "ModelValidityWarning": "viscocontact.errors",
+    "CertificationWarning": "viscocontact.errors",
 }
 
 
