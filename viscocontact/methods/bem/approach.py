@@ -103,6 +103,11 @@ class Approach:
             # solved from the first contact widened
             _record(self.eq.log, "no first contact", penetration=d0)
             return self.at_once(edges, target)
+        if state.outcome is Outcome.NO_CONTACT:
+            # no contact holds at first touch (its advancing edge, toughened less than the
+            # adhesion pulls, recedes until the contact vanishes): the profile is pressed on
+            _record(self.eq.log, "no contact at first touch", penetration=d0)
+            return self.held(d0, target)
         if state.outcome is Outcome.FULL_CONTACT:   # the first contact settles
             return self.closed(state, None, target)
         if not state.converged:
@@ -110,9 +115,9 @@ class Approach:
         return self.climb(state, target)
 
     def pressed(self, edges, d0: float, target: Control) -> State:
-        """An adhesionless contact from its first touch at ``Δ̃ = d0`` (a point: no edge
-        motion settles it): its equilibrium is unique, so the path only gives each solve a
-        close start. The contact just past the first touch is solved from it, then the branch is
+        """A contact pressed on from its first touch at ``Δ̃ = d0`` where none settles there
+        (adhesionless: a point; its equilibrium is unique, so the path only gives each solve a
+        close start). The contact just past the first touch is solved from it, then the branch is
         followed to the target in steps that are halved where the solver fails."""
         first = Control.penetration_of(d0 + self.options.smallest)
         if not target.is_load and target.value <= first.value:
@@ -123,6 +128,48 @@ class Approach:
         if not state.converged:
             return state
         return self.climb(state, target)
+
+    def held(self, d0: float, target: Control) -> State:
+        """The first contact that holds as the profile is pressed on past ``d0``, where no
+        contact holds at first touch: at each penetration the edges' motion starts from the
+        overlap of the undeformed profile with the solid; the penetration where a contact first
+        holds (or closes) is located between path steps to the resolution, and the approach goes
+        on from there."""
+        opt, eq = self.options, self.eq
+
+        def motion(depth: float) -> State:
+            control = Control.penetration_of(depth)
+            overlap = eq.checks.births_without_contact(control)
+            if overlap is None:
+                return State.no_contact()
+            return self.relax.run(overlap, control, final=False)
+
+        end = target.value if not target.is_load else 1.0
+        lo, hi, landing = d0, None, None
+        depth = d0
+        while depth < end:
+            depth = min(depth + opt.path_step, end)
+            landing = motion(depth)
+            if landing.outcome is not Outcome.NO_CONTACT:
+                hi = depth
+                break
+            lo = depth
+        if hi is None or landing is None:
+            return State.no_contact() if not target.is_load else self.at_once(
+                eq.checks.births_without_contact(Control.penetration_of(end)), target)
+        while hi - lo > opt.smallest:
+            middle = 0.5 * (lo + hi)
+            out = motion(middle)
+            if out.outcome is Outcome.NO_CONTACT:
+                lo = middle
+            else:
+                hi, landing = middle, out
+        _record(eq.log, "first hold", penetration=hi)
+        if landing.outcome is Outcome.FULL_CONTACT:
+            return self.closed(landing, None, target)
+        if not landing.converged or self.reached(landing, target):
+            return landing
+        return self.climb(landing, target)
 
     def at_once(self, edges, target: Control) -> State:
         """The target solved directly from the first contact ``edges`` widened 1, 4 and 16

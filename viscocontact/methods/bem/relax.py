@@ -185,7 +185,10 @@ class Relaxation:
                 return State.full_contact()
             if not landed.size:
                 self.eq.log.event("the edges' motion detached every contact")
-                return self.eq.solve(landed, control, use_fallback=False, **self._finish)
+                if control.is_load and control.value > 0:
+                    # a compressive load needs a contact: found afresh from the first touch
+                    return self.eq.solve(landed, control, use_fallback=False, **self._finish)
+                return State.no_contact()
             after = self.eq.system(control, landed) if changed else system
             r_new = self._residual(after, landed)
             if r_new is None:
