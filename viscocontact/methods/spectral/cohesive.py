@@ -24,8 +24,8 @@ the tips are found by iterating on the gaps, each tip ``g = η`` placed between 
 The law is non-convex (the traction jumps at ``g = η``), so a scene can have several equilibria
 (the JKR-like branches); this iteration finds the one it reaches from its start, and the
 spectral method starts it along the approach from first touch
-(:mod:`~viscocontact.methods.spectral.approach`), then from the previous grid's solution. The cross-check it serves is the
-low-Tabor side, where the zones are wide and the equilibrium is unique: a zone must span many
+(:mod:`~viscocontact.methods.spectral.approach`), then from the previous grid's solution. The
+cross-check it serves is the low-Tabor side, where the zones are wide: a zone must span many
 cells (:func:`zone_cells`).
 """
 from __future__ import annotations
