@@ -95,6 +95,7 @@ def test_load_control_ends_at_the_target_load_on_the_penetration_controlled_stat
     assert a.mean_pressure == pytest.approx(load, abs=2e-3)
 
 
+@pytest.mark.slow
 def test_the_result_carries_the_history_and_the_plan_names_it():
     target = MaugisDugdaleWavy(Gamma=GAMMA, h0=ETA).state(3.5)
     prob = _scene(penetration=target.penetration)
