@@ -123,3 +123,23 @@ def test_an_adhesionless_result_has_no_history():
 def test_bad_settings_name_the_field(field, value):
     with pytest.raises(ValidationError, match=f"ApproachSettings.{field}"):
         ApproachSettings(**{field: value})
+
+
+@pytest.mark.parametrize("penetration", [0.8, 0.95])
+def test_a_zone_that_fills_the_whole_gap_is_the_closed_form(penetration):
+    """A range η = 1 (Γ̃ = 0.01, DMT-like): past Δ̃ ≈ 0.7 every cell is in contact or under the
+    cohesive stress (the largest gap, 0.65 and 0.23, below η), a legitimate state that the
+    approach reaches and the closed form has: Δ̃ at the grid's area within 1e-4."""
+    prob = ContactProblem(method=BEM(), profile=Sinusoid(amplitude=AMPLITUDE), rheology=Elastic(),
+                          adhesion=MaugisDugdale(gamma=0.01 * AMPLITUDE**2, range=AMPLITUDE),
+                          solver=Broyden(), penetration=penetration)
+    r = Spectral().solve(prob, fields=True)
+    assert r.converged and r.extras["tolerance_met"], r.message
+    law = r.extras["cohesive"]
+    # every cell within the range: in contact, or under the cohesive stress (no free cell)
+    assert np.max(r.fields["gap"]) < law["opening"]
+    open_ = r.fields["gap"] > 1e-8                 # beyond the grid solve's residual (1e-9)
+    assert open_.any() and np.all(r.fields["pressure"][open_] == -law["strength"])
+    state = MaugisDugdaleWavy(Gamma=0.01, h0=1.0).state(r.area)
+    assert state.penetration == pytest.approx(penetration, abs=1e-4)
+    assert state.mean_pressure == pytest.approx(r.mean_pressure, abs=1e-3)
