@@ -273,7 +273,9 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         previous grid's carried over.
     start_penetration : float, optional
         ``Δ̃`` of ``start`` (load control; default: from the displacement of ``start`` on its
-        loaded cells).
+        loaded cells). Given, ``start`` is taken for a nearby state: the first inner solve
+        starts from it, and from the solution for the operator's symmetric part only if it
+        fails.
     start_contact : ndarray of bool, optional
         A contact set to start from (a warm start: another method's contacts) instead of the
         cells in range under ``start``: the first solve puts the cohesive stress on these
@@ -348,8 +350,11 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
             sol = GridSolution(pressure=np.zeros(n), penetration=float(penetration),
                                converged=True, residual=0.0, iterations=0, applications=0,
                                solver="none", message="no contact")
-        elif k > 1 or circulant.symmetric or contact_start:
-            # from the last solution: the tips moved a little
+        elif k > 1 or circulant.symmetric or contact_start or start_penetration is not None:
+            # from the last solution (the tips moved a little), or from a start with its
+            # penetration, a nearby state (the approach's last step, a coarser grid's): on a
+            # λ = 5 sinusoid at ζ = 1, Δ̃ = 0.5 the presolve's start failed at 4096 cells
+            # where this one converges
             sol = grid_solve(circulant, shifted, start_penetration=delta if load else None,
                              **options)
             counts.append(sol)
