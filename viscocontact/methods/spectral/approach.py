@@ -156,86 +156,109 @@ def approach(solve: Solve, law: GridLaw, heights, *, penetration=None, mean_pres
         Exactly one: the target ``Δ̃`` or ``p̃∞``.
     settings : ApproachSettings
     """
-    start = -law.opening
-    r = np.asarray(heights, dtype=float)
-    points = r.size
-    p0 = np.zeros(points)
-    first = GridSolution(pressure=p0, penetration=start, converged=True, residual=0.0,
-                         iterations=0, applications=0, solver="none", message="first touch")
-    current = CohesiveSolution(solution=first, contact=np.zeros(points, bool),
-                               weights=np.zeros(points), gap=1.0 - r - start, sets=0)
-    state = state_of(current)
-    history, events = [state], []
-    counts = [0, 0, 0]
-    load = mean_pressure is not None
-    target = None if load else float(penetration)
-    step = settings.path_step
+    return _Approach(solve, law, heights, settings).run(penetration, mean_pressure)
 
-    def run(start_solution: CohesiveSolution, **control) -> CohesiveSolution:
-        sol = start_solution.solution
-        out = solve(sol.pressure, sol.penetration, **control)
-        counts[0] += 1
-        counts[1] += out.solution.iterations
-        counts[2] += out.solution.applications
+
+class _Approach:
+    """The continuation of one :func:`approach`: the last accepted state, the history, the
+    events and the counts of the grid solves."""
+
+    def __init__(self, solve: Solve, law: GridLaw, heights, settings: ApproachSettings):
+        self.solve, self.law, self.settings = solve, law, settings
+        start = -law.opening
+        r = np.asarray(heights, dtype=float)
+        n = r.size
+        first = GridSolution(pressure=np.zeros(n), penetration=start, converged=True,
+                             residual=0.0, iterations=0, applications=0, solver="none",
+                             message="first touch")
+        self.current = CohesiveSolution(solution=first, contact=np.zeros(n, bool),
+                                        weights=np.zeros(n), gap=1.0 - r - start, sets=0)
+        self.state = state_of(self.current)
+        self.history: list[PathState] = [self.state]
+        self.events: list[PathEvent] = []
+        self.counts = [0, 0, 0]
+
+    def _counted(self, out: CohesiveSolution) -> CohesiveSolution:
+        self.counts[0] += 1
+        self.counts[1] += out.solution.iterations
+        self.counts[2] += out.solution.applications
         return out
 
-    def snap(aim: float) -> CohesiveSolution:
-        # no equilibrium near the branch: the cells that the step brings within the range
-        # snap into contact (the boundary-element method's rule), and the zones grow from them
-        sol = current.solution
-        reach = current.contact | (current.gap - (aim - sol.penetration) < law.opening)
-        out = solve(sol.pressure, sol.penetration, penetration=aim, contact=reach)
-        counts[0] += 1
-        counts[1] += out.solution.iterations
-        counts[2] += out.solution.applications
-        return out
+    def _from(self, start: CohesiveSolution, **control) -> CohesiveSolution:
+        sol = start.solution
+        return self._counted(self.solve(sol.pressure, sol.penetration, **control))
 
-    def outcome(solved, message=None) -> ApproachOutcome:
+    def _snap(self, aim: float) -> CohesiveSolution:
+        """No equilibrium near the branch: the cells that the step brings within the range
+        snap into contact (the boundary-element method's rule), and the zones grow from them."""
+        sol = self.current.solution
+        reach = self.current.contact | (self.current.gap - (aim - sol.penetration)
+                                        < self.law.opening)
+        return self._counted(self.solve(sol.pressure, sol.penetration, penetration=aim,
+                                        contact=reach))
+
+    def _outcome(self, solved, message=None) -> ApproachOutcome:
         if message is not None:
             sol = solved.solution
             solved = attrs.evolve(solved, solution=attrs.evolve(
                 sol, converged=False, message=f"approach: {message}"))
-        return ApproachOutcome(solved=solved, history=tuple(history), events=tuple(events),
-                               solves=counts[0], iterations=counts[1], applications=counts[2])
+        return ApproachOutcome(solved=solved, history=tuple(self.history),
+                               events=tuple(self.events), solves=self.counts[0],
+                               iterations=self.counts[1], applications=self.counts[2])
 
-    while True:
-        here = state.penetration
-        if not load and here >= target:
-            return outcome(current)
-        aim = here + step if load else min(here + step, target)
-        trial = run(current, penetration=aim)
-        if counts[0] >= settings.max_steps:
-            return outcome(trial, f"{settings.max_steps} solves before the target")
-        ok = trial.solution.converged
-        new = state_of(trial) if ok else None
-        smooth = ok and _same_structure(state, new)
-        if not smooth and step > settings.smallest * (1.0 + 1e-9):
-            step = max(0.5 * step, settings.smallest)
-            continue
-        if not ok:
-            jumped = snap(aim)
-            if not jumped.solution.converged:
-                return outcome(trial, f"no equilibrium at Δ̃ = {aim:.6g} within a step of "
-                                      f"{step:.2g}, nor after a snap into contact: "
-                                      f"{trial.solution.message}")
-            trial, new = jumped, state_of(jumped)
-        if not smooth:
-            events.append(PathEvent(penetration=aim, step=step, before=state, after=new))
-        if load and new.mean_pressure >= mean_pressure:
-            # the target load lies within this step: end it under load control from the
-            # nearer state on either side
-            nearer = (current if mean_pressure - state.mean_pressure
-                      < new.mean_pressure - mean_pressure else trial)
-            final = run(nearer, mean_pressure=mean_pressure)
-            if final.solution.converged:
-                history.append(state_of(final))
-                return outcome(final)
-            if step <= settings.smallest * (1.0 + 1e-9):
-                return outcome(final, f"no equilibrium at p̃∞ = {mean_pressure:g} from the "
-                                      f"states at Δ̃ = {here:.6g} and {aim:.6g}")
-            step = max(0.5 * step, settings.smallest)
-            continue
-        current, state = trial, new
-        history.append(state)
-        if smooth:
-            step = min(2.0 * step, settings.path_step)
+    def _shorter(self, step: float) -> float | None:
+        """Half the step, or None when it is already the shortest."""
+        smallest = self.settings.smallest
+        return None if step <= smallest * (1.0 + 1e-9) else max(0.5 * step, smallest)
+
+    def run(self, penetration, mean_pressure) -> ApproachOutcome:
+        load = mean_pressure is not None
+        step = self.settings.path_step
+        while True:
+            here = self.state.penetration
+            if not load and here >= penetration:
+                return self._outcome(self.current)
+            aim = here + step if load else min(here + step, float(penetration))
+            trial = self._from(self.current, penetration=aim)
+            if self.counts[0] >= self.settings.max_steps:
+                return self._outcome(trial, f"{self.settings.max_steps} solves before the "
+                                            "target")
+            ok = trial.solution.converged
+            new = state_of(trial) if ok else None
+            smooth = ok and _same_structure(self.state, new)
+            shorter = None if smooth else self._shorter(step)
+            if shorter is not None:
+                step = shorter
+                continue
+            if not ok:
+                trial = self._snap(aim)
+                if not trial.solution.converged:
+                    return self._outcome(trial, f"no equilibrium at Δ̃ = {aim:.6g} within a "
+                                                f"step of {step:.2g}, nor after a snap into "
+                                                f"contact: {trial.solution.message}")
+                new = state_of(trial)
+            if not smooth:
+                self.events.append(PathEvent(penetration=aim, step=step, before=self.state,
+                                             after=new))
+            if load and new.mean_pressure >= mean_pressure:
+                final = self._to_load(trial, new, mean_pressure)
+                if final.solution.converged or self._shorter(step) is None:
+                    return self._outcome(final, None if final.solution.converged else
+                                         f"no equilibrium at p̃∞ = {mean_pressure:g} from the "
+                                         f"states at Δ̃ = {here:.6g} and {aim:.6g}")
+                step = self._shorter(step)
+                continue
+            self.current, self.state = trial, new
+            self.history.append(new)
+            if smooth:
+                step = min(2.0 * step, self.settings.path_step)
+
+    def _to_load(self, trial, new: PathState, load: float) -> CohesiveSolution:
+        """The target load lies within the last step: a load-controlled solve from the nearer
+        of the states on either side (into the history when it converges)."""
+        nearer = (self.current if load - self.state.mean_pressure < new.mean_pressure - load
+                  else trial)
+        final = self._from(nearer, mean_pressure=load)
+        if final.solution.converged:
+            self.history.append(state_of(final))
+        return final

@@ -173,6 +173,36 @@ def first_points(wavelength: float | None, tolerance: float, max_points: int) ->
     return int(min(n, max_points - max_points % 2))
 
 
+def _cohesive_plan(law: GridLaw, points: int, settings: ApproachSettings, model: str) -> tuple:
+    """The plan's steps of a cohesive law (of the adhesion model named ``model``) on a first
+    trusted grid of ``points`` cells."""
+    from ...plan import PlanStep
+
+    return (PlanStep(stage="adhesion",
+                     choice=f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where "
+                            f"the gap is below η = {law.opening:.4g}; tips between cells by the "
+                            f"secant of the gap; {zone_cells(law, points):.0f} cells per "
+                            f"quasi-static zone q0a0 = {law.zone:.3g} on the first trusted grid",
+                     reason=f"{model}: at least {CELLS_PER_ZONE:g} cells per zone"),
+            PlanStep(stage="history",
+                     choice=f"approach from first touch (Δ̃ = -η) to the target on the first "
+                            f"grid, steps of Δ̃ up to {settings.path_step:g}, events located "
+                            f"to {settings.smallest:.2g}; the finer grids start from it",
+                     reason="a non-convex law has several equilibria: the one reached by "
+                            "quasi-static loading, as the boundary-element method's"))
+
+
+def _record_approach(history, events, extras) -> None:
+    """The approach's events into the event log, its states and typed events into
+    ``extras["history"]`` and ``extras["path_events"]``."""
+    for text in history.pop("texts"):
+        events.append(text)
+    events.append(f"approach from first touch on {history['points']} cells: "
+                  f"{history['solves']} steps, {len(history['events'])} events")
+    extras["history"] = history.pop("states")
+    extras["path_events"] = history.pop("events")
+
+
 @attrs.frozen(kw_only=True)
 class Spectral(SolutionMethod):
     r"""Uniform-grid spectral method for adhesionless scenes and finite-range cohesive laws
@@ -392,20 +422,8 @@ class Spectral(SolutionMethod):
         control = ("load control, p̃∞ = " + f"{problem.mean_pressure:g}"
                    if problem.mean_pressure is not None
                    else "penetration control, Δ̃ = " + f"{problem.penetration:g}")
-        cohesive = () if law is None else (PlanStep(
-            stage="adhesion",
-            choice=f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the gap "
-                   f"is below η = {law.opening:.4g}; tips between cells by the secant of the "
-                   f"gap; {zone_cells(law, n):.0f} cells per quasi-static zone "
-                   f"q0a0 = {law.zone:.3g} on the first trusted grid",
-            reason=f"{type(problem.adhesion).__name__}: at least {CELLS_PER_ZONE:g} cells per "
-                   "zone"),
-            PlanStep(stage="history",
-                     choice=f"approach from first touch (Δ̃ = -η) to the target on the first "
-                            f"grid, steps of Δ̃ up to {self.approach.path_step:g}, events located "
-                            f"to {self.approach.smallest:.2g}; the finer grids start from it",
-                     reason="a non-convex law has several equilibria: the one reached by "
-                            "quasi-static loading, as the boundary-element method's"))
+        cohesive = () if law is None else _cohesive_plan(
+            law, n, self.approach, type(problem.adhesion).__name__)
         return (PlanStep(stage="method", choice="spectral: uniform grid, FFT products",
                          reason="adhesionless scene" if law is None else
                                 "finite-range cohesive law (wide zones)"),
@@ -483,7 +501,7 @@ class Spectral(SolutionMethod):
                 current = measure(grid, sol, op.eigenvalues, self.workers or 1, law=law,
                                   contact=solved.contact, weights=solved.weights)
                 if previous is None and history:
-                    self._record_approach(history, events, extras)
+                    _record_approach(history, events, extras)
             iterations += sol.iterations
             applications += sol.applications
             events.append(f"{grid.points} cells: {sol.solver}, {sol.message}")
@@ -515,17 +533,6 @@ class Spectral(SolutionMethod):
                                 extras, closed, law)
         extras["seconds"] = time.perf_counter() - started
         return result
-
-    @staticmethod
-    def _record_approach(history, events, extras) -> None:
-        """The approach's events into the event log, its states and typed events into
-        ``extras["history"]`` and ``extras["path_events"]``."""
-        for text in history.pop("texts"):
-            events.append(text)
-        events.append(f"approach from first touch on {history['points']} cells: "
-                      f"{history['solves']} steps, {len(history['events'])} events")
-        extras["history"] = history.pop("states")
-        extras["path_events"] = history.pop("events")
 
     def _warm_start(self, grid, initial, load) -> np.ndarray:
         if getattr(initial, "full_contact", False):
