@@ -90,11 +90,13 @@ between cells; no edge condition, and cohesive runs without contact are allowed.
 resolve the zones (:data:`~viscocontact.methods.spectral.cohesive.CELLS_PER_ZONE` cells per
 quasi-static zone on the first trusted grid), so this is the low-Tabor side: the cross-check of
 the BEM's cohesive zones where they are wide (``docs/cohesive.md``, "The spectral
-cross-check"). It starts from the adhesionless contact, not along a loading path, so a scene
-with several equilibria may end on another one than the BEM's; :class:`~viscocontact.methods.
-auto.Auto` keeps adhesive scenes on the BEM. A model with only a smooth traction
-(:meth:`AdhesionModel.traction`; :class:`~viscocontact.adhesion.LennardJones`) is applied cell by
-cell as a tension at every gap (:mod:`~viscocontact.methods.spectral.traction`).
+cross-check"). The law is non-convex, so a scene may have several equilibria; the solve
+follows the project's default history, the approach from first touch
+(:mod:`~viscocontact.methods.spectral.approach`: a continuation in ``Δ̃`` on the first grid, its
+states and events in ``extras["history"]`` and ``extras["path_events"]``), as the BEM does;
+:class:`~viscocontact.methods.auto.Auto` keeps adhesive scenes on the BEM. A model with only a
+smooth traction (:meth:`AdhesionModel.traction`; :class:`~viscocontact.adhesion.LennardJones`)
+is applied cell by cell as a tension at every gap (:mod:`~viscocontact.methods.spectral.traction`).
 
 Limits: adhesive scenes without a cohesive law, short-range laws (use the BEM); contacts narrower than two cells get their cells as
 their extent (the estimate sees them and refines); the active set may fail on very

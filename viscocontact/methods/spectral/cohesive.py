@@ -22,9 +22,10 @@ the tips are found by iterating on the gaps, each tip ``g = η`` placed between 
 (:func:`tip_positions`, :func:`tip_weights`, :func:`cohesive_solve`).
 
 The law is non-convex (the traction jumps at ``g = η``), so a scene can have several equilibria
-(the JKR-like branches); this iteration starts from the adhesionless solution, or from the
-previous grid's, and finds the one it reaches from there. The cross-check it serves is the
-low-Tabor side, where the zones are wide and the equilibrium is unique: a zone must span many
+(the JKR-like branches); this iteration finds the one it reaches from its start, and the
+spectral method starts it along the approach from first touch
+(:mod:`~viscocontact.methods.spectral.approach`), then from the previous grid's solution. The
+cross-check it serves is the low-Tabor side, where the zones are wide: a zone must span many
 cells (:func:`zone_cells`).
 """
 from __future__ import annotations
@@ -43,6 +44,8 @@ MAX_SETS = 60
 #: Residual of the inner solves while the runs change (``contact_start``; then a hundredth of the
 #: tips' largest residual, down to the tolerance).
 LOOSE_INNER = 1e-6
+#: A tip's secant slope is used down to this fraction of the gap's own slope there.
+FLATTEST_SLOPE = 0.05
 #: Fewest cells per quasi-static Dugdale zone ``h̃0²/(4γ̃)`` on the first trusted grid (a
 #: viscoelastic zone lies within ``[a0/2, βa0]``).
 CELLS_PER_ZONE = 32.0
@@ -188,13 +191,34 @@ def _matches(old, new, points: int) -> bool:
 def _secant(position, residual, before, slope_hint):
     """The next position of one tip from its last two residuals (``before``: the previous
     ``(position, residual)``), or None when they give no usable slope (same position, or a
-    slope against the gap's own or far flatter than a twentieth of it)."""
+    slope against the gap's own or far flatter than a twentieth of it). Two residuals of
+    opposite signs bracket the tip: the secant then interpolates between them, whatever its
+    slope."""
     if before is None or position == before[0]:
         return None
     slope = (residual - before[1]) / (position - before[0])
+    if residual * before[1] < 0.0:
+        return position - residual / slope
     if not slope * slope_hint > 0 or abs(slope) < 0.05 * abs(slope_hint):
         return None
     return position - residual / slope
+
+
+def _tip_step(position, residual, before, fresh, slope_hint):
+    """The next position of one tip: the secant (:func:`_secant`), else, when the fixed point
+    ``fresh`` (where the gap crosses η) moves on in the direction of the last move but by less
+    than twice it, twice the last move (a zone that grows under its own stress, the jump of a
+    snap, or a soft zone whose fixed point creeps: the moves double until the residual changes
+    sign, and the secant then interpolates), else ``fresh``."""
+    moved = _secant(position, residual, before, slope_hint)
+    if moved is not None:
+        return moved
+    if before is None:
+        return fresh
+    last, ahead = position - before[0], fresh - position
+    if last * ahead > 0.0 and abs(ahead) < 2.0 * abs(last):
+        return position + 2.0 * last
+    return fresh
 
 
 def _row_tips(gap, contact, law: GridLaw, rows: int) -> list:
@@ -215,11 +239,11 @@ def _moved(extents, residuals, fresh, gap, before):
     moved = []
     for j, ((lo, hi), (r_lo, r_hi), (f_lo, f_hi)) in enumerate(zip(extents, residuals, fresh)):
         old = None if before is None else before[j]
-        new_lo = _secant(lo, r_lo, None if old is None else (old[0][0], old[1][0]),
-                         _interp(gap, lo + 0.5) - _interp(gap, lo - 0.5))
-        new_hi = _secant(hi, r_hi, None if old is None else (old[0][1], old[1][1]),
-                         _interp(gap, hi + 0.5) - _interp(gap, hi - 0.5))
-        moved.append((f_lo if new_lo is None else new_lo, f_hi if new_hi is None else new_hi))
+        new_lo = _tip_step(lo, r_lo, None if old is None else (old[0][0], old[1][0]), f_lo,
+                           _interp(gap, lo + 0.5) - _interp(gap, lo - 0.5))
+        new_hi = _tip_step(hi, r_hi, None if old is None else (old[0][1], old[1][1]), f_hi,
+                           _interp(gap, hi + 0.5) - _interp(gap, hi - 0.5))
+        moved.append((new_lo, new_hi))
     return moved
 
 
@@ -252,7 +276,9 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
         previous grid's carried over.
     start_penetration : float, optional
         ``Δ̃`` of ``start`` (load control; default: from the displacement of ``start`` on its
-        loaded cells).
+        loaded cells). Given, ``start`` is taken for a nearby state: the first inner solve
+        starts from it, and from the solution for the operator's symmetric part only if it
+        fails.
     start_contact : ndarray of bool, optional
         A contact set to start from (a warm start: another method's contacts) instead of the
         cells in range under ``start``: the first solve puts the cohesive stress on these
@@ -327,12 +353,21 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
                        **control)
         counts = []
         sol = None
-        if k > 1 or circulant.symmetric or contact_start:
-            # from the last solution: the tips moved a little
+        if not load and np.max(shifted) - 1.0 + float(penetration) <= 0.0:
+            # no cell reaches the plane under the cohesive stress (tension without contact):
+            # q = 0 is the solution
+            sol = GridSolution(pressure=np.zeros(n), penetration=float(penetration),
+                               converged=True, residual=0.0, iterations=0, applications=0,
+                               solver="none", message="no contact")
+        elif k > 1 or circulant.symmetric or contact_start or start_penetration is not None:
+            # from the last solution (the tips moved a little), or from a start with its
+            # penetration, a nearby state (the approach's last step, a coarser grid's): on a
+            # λ = 5 sinusoid at ζ = 1, Δ̃ = 0.5 the presolve's start failed at 4096 cells
+            # where this one converges
             sol = grid_solve(circulant, shifted, start_penetration=delta if load else None,
                              **options)
             counts.append(sol)
-        if sol is None or not (sol.converged or circulant.symmetric):
+        if sol is None or not (sol.converged or circulant.symmetric or sol.solver == "none"):
             # a start far from the solution (the adhesionless contact, a coarser grid's carried
             # over): the active set then needs damped steps by the dozen (on a sinusoid at
             # ζ = 1e-2 it failed in 100), so it starts from the solution for the operator's

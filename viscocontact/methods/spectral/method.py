@@ -23,6 +23,7 @@ from ...problem import Prepared
 from ...result import ContactResult, SolveStatus
 from ..base import SolutionMethod
 from .closed import ClosedContact, no_contact_result
+from .approach import ApproachSettings, approach
 from .cohesive import CELLS_PER_ZONE, GridLaw, cohesive_solve, law_violation, zone_cells
 from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
@@ -173,6 +174,39 @@ def first_points(wavelength: float | None, tolerance: float, max_points: int) ->
     return int(min(n, max_points - max_points % 2))
 
 
+def _cohesive_plan(law: GridLaw, points: int, settings: ApproachSettings, model: str) -> tuple:
+    """The plan's steps of a cohesive law (of the adhesion model named ``model``) on a first
+    trusted grid of ``points`` cells."""
+    from ...plan import PlanStep
+
+    return (PlanStep(stage="adhesion",
+                     choice=(f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} "
+                             f"where the gap is below η = {law.opening:.4g}; tips between cells "
+                             "by the secant of the gap; " if isinstance(law, GridLaw) else
+                             f"traction law cell by cell: peak tension {law.strength:.4g}, the "
+                             "tension a fixed point of the gaps; ")
+                            + f"{zone_cells(law, points):.0f} cells per quasi-static zone "
+                              f"q0a0 = {law.zone:.3g} on the first trusted grid",
+                     reason=f"{model}: at least {CELLS_PER_ZONE:g} cells per zone"),
+            PlanStep(stage="history",
+                     choice=f"approach from first touch (Δ̃ = -η) to the target on the first "
+                            f"grid, steps of Δ̃ up to {settings.path_step:g}, events located "
+                            f"to {settings.smallest:.2g}; the finer grids start from it",
+                     reason="a non-convex law has several equilibria: the one reached by "
+                            "quasi-static loading, as the boundary-element method's"))
+
+
+def _record_approach(history, events, extras) -> None:
+    """The approach's events into the event log, its states and typed events into
+    ``extras["history"]`` and ``extras["path_events"]``."""
+    for text in history.pop("texts"):
+        events.append(text)
+    events.append(f"approach from first touch on {history['points']} cells: "
+                  f"{history['solves']} steps, {len(history['events'])} events")
+    extras["history"] = history.pop("states")
+    extras["path_events"] = history.pop("events")
+
+
 @attrs.frozen(kw_only=True)
 class Spectral(SolutionMethod):
     r"""Uniform-grid spectral method for adhesionless scenes and finite-range cohesive laws
@@ -204,6 +238,9 @@ class Spectral(SolutionMethod):
         Conjugate-gradient steps per grid (Polonsky-Keer).
     max_updates : int
         Active-set updates per grid.
+    approach : ApproachSettings
+        The history of a cohesive solve: the continuation in ``Δ̃`` from first touch on the
+        first grid (:mod:`~viscocontact.methods.spectral.approach`).
 
     Examples
     --------
@@ -234,6 +271,8 @@ class Spectral(SolutionMethod):
     krylov_tolerance: float = attrs.field(default=1e-10, validator=in_range(1e-15, 1e-2))
     max_iterations: int = attrs.field(default=20000, validator=int_range(10, 10**7))
     max_updates: int = attrs.field(default=100, validator=int_range(2, 10**5))
+    approach: ApproachSettings = attrs.field(
+        factory=ApproachSettings, validator=attrs.validators.instance_of(ApproachSettings))
 
     def __attrs_post_init__(self):
         if self.points is not None and self.points > self.max_points:
@@ -253,8 +292,9 @@ class Spectral(SolutionMethod):
                     "maugis-dugdale, which the grid applies cell by cell)")
         if problem.mean_pressure is not None and not problem.mean_pressure > 0:
             return (f"cohesive law under load control at p̃∞ = {problem.mean_pressure:g}: the "
-                    "grid starts from the adhesionless contact, which needs p̃∞ > 0; use "
-                    "penetration control or the boundary-element method")
+                    "approach ends at the target load once it is reached, which needs p̃∞ > 0 "
+                    "(a tensile load is met before the load's minimum, where load control is "
+                    "unstable); use penetration control or the boundary-element method")
         need = self.zone_points(law)
         if need > self.max_points:
             return (f"the cohesive zone q0a0 = {law.zone:.3g} needs {need} cells "
@@ -316,7 +356,10 @@ class Spectral(SolutionMethod):
                   "friction_dissipation": np.nan, "seconds": 0.0, "events": events,
                   # bounded stress at every edge (no adhesion, or a cohesive law): no energy
                   # flows into the edges, and the model holds wherever the grid converges
-                  "friction_edges": 0.0, "outside_model": ""}
+                  "friction_edges": 0.0, "outside_model": "",
+                  # the approach's accepted states and typed events (a cohesive law's history;
+                  # an adhesionless scene has one equilibrium and no history)
+                  "history": [], "path_events": []}
         common = dict(iterations=0, function_evaluations=0, zeta=float(problem.zeta),
                       edge_perturbation=0.0, extras=extras)
         # a cohesive law acts from a gap below its range on: a penetration down to -η can
@@ -381,17 +424,8 @@ class Spectral(SolutionMethod):
         control = ("load control, p̃∞ = " + f"{problem.mean_pressure:g}"
                    if problem.mean_pressure is not None
                    else "penetration control, Δ̃ = " + f"{problem.penetration:g}")
-        cohesive = () if law is None else (PlanStep(
-            stage="adhesion",
-            choice=(f"cohesive law cell by cell: tension σ̃0 = {law.strength:.4g} where the "
-                    f"gap is below η = {law.opening:.4g}; tips between cells by the secant of "
-                    "the gap; " if isinstance(law, GridLaw) else
-                    f"traction law cell by cell: peak tension {law.strength:.4g}, the tension "
-                    "a fixed point of the gaps; ") + f"{zone_cells(law, n):.0f} cells per "
-                   f"quasi-static zone q0a0 = {law.zone:.3g} on the first trusted grid",
-            reason=f"{type(problem.adhesion).__name__}: at least {CELLS_PER_ZONE:g} cells per "
-                   "zone; from the adhesionless contact, not along a loading path (a JKR-like "
-                   "scene with several equilibria may end on another one than the BEM's)"),)
+        cohesive = () if law is None else _cohesive_plan(
+            law, n, self.approach, type(problem.adhesion).__name__)
         return (PlanStep(stage="method", choice="spectral: uniform grid, FFT products",
                          reason="adhesionless scene" if law is None else
                                 "finite-range cohesive law (wide zones)"),
@@ -454,6 +488,7 @@ class Spectral(SolutionMethod):
         previous, current = None, None
         iterations = applications = 0
         errors, last = (np.inf, np.inf), None
+        history: dict = {}
         while True:
             op = prep.operators.circulant(prep.kernel, grid.points)
             start_penetration = None if previous is None else previous.solution.penetration
@@ -463,10 +498,12 @@ class Spectral(SolutionMethod):
             else:
                 solved = self._solve_cohesive(op, grid, load, pen, start, start_penetration,
                                               law, first=previous is None,
-                                              warm=initial is not None)
+                                              warm=initial is not None, history=history)
                 sol = solved.solution
                 current = measure(grid, sol, op.eigenvalues, self.workers or 1, law=law,
                                   contact=solved.contact, weights=solved.weights)
+                if previous is None and history:
+                    _record_approach(history, events, extras)
             iterations += sol.iterations
             applications += sol.applications
             events.append(f"{grid.points} cells: {sol.solver}, {sol.message}")
@@ -525,29 +562,33 @@ class Spectral(SolutionMethod):
                     workers=self.workers or 1)
 
     def _solve_cohesive(self, op, grid, load, pen, start, start_penetration, law, first,
-                        warm=False):
+                        warm=False, history=None):
         """A cohesive grid solve (:func:`~.cohesive.cohesive_solve`). On the first grid it
-        starts from the adhesionless solution (load control) or from no load (penetration
-        control); with a warm start, from its contacts under the cohesive stress, whose zones
-        then grow (so that another method's equilibrium, a merged contact that adhesion holds,
-        is checked as it is)."""
-        its = apps = 0
-        contact = None
+        follows the approach from first touch (:func:`~.approach.approach`; its states and
+        events into ``history``); with a warm start, it starts from its contacts under the
+        cohesive stress, whose zones then grow (so that another method's equilibrium, a merged
+        contact that adhesion holds, is checked as it is); on the finer grids, from the
+        coarser grid's solution carried over."""
+        options = self._grid_options()
+
+        def solve(p, delta, penetration=None, mean_pressure=None, contact=None):
+            return cohesive_solve(op, grid.heights, law, mean_pressure=mean_pressure,
+                                  penetration=penetration, start=p, start_penetration=delta,
+                                  start_contact=contact, **options)
+
+        control = dict(mean_pressure=load) if load is not None else dict(penetration=pen)
         if first and warm:
-            contact = start > 0
-        elif first:
-            if load is not None:
-                bare = self._solve_grid(op, grid, load, None, start, None)
-                its, apps = bare.iterations, bare.applications
-                start, start_penetration = bare.pressure, bare.penetration
-            else:
-                start = np.zeros(grid.points)
-        solved = cohesive_solve(op, grid.heights, law, mean_pressure=load, penetration=pen,
-                                start=start, start_penetration=start_penetration,
-                                start_contact=contact, **self._grid_options())
-        sol = solved.solution
-        return attrs.evolve(solved, solution=attrs.evolve(
-            sol, iterations=sol.iterations + its, applications=sol.applications + apps))
+            return solve(start, None, contact=start > 0, **control)
+        if not first:
+            return solve(start, start_penetration, **control)
+        path = approach(solve, law, grid.heights, settings=self.approach, **control)
+        if history is not None:
+            history.update(states=[s.to_dict() for s in path.history],
+                           events=[e.to_dict() for e in path.events], solves=path.solves,
+                           points=grid.points, texts=[e.text() for e in path.events])
+        sol = path.solved.solution
+        return attrs.evolve(path.solved, solution=attrs.evolve(
+            sol, iterations=path.iterations, applications=path.applications))
 
     def _assemble(self, problem, prep, current: GridMeasures, iterations, applications, fields,
                   extras, closed, law=None) -> ContactResult:
