@@ -320,13 +320,14 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
             seen.clear()
         seen.add(key)
         idx = np.flatnonzero(active)
-        sol, info = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n, loose,
-                                      tight, restart)
+        sol, info, product = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n,
+                                               loose, (tight, 0.5 * tolerance), restart)
         target = np.zeros(n)
         target[idx] = sol[:idx.size]
         step_p = target - p
         step_d = float(sol[idx.size]) - delta if load else 0.0
-        step_g = apply(step_p) - step_d
+        # A·target is GMRES's last product: the step of the gaps without another one
+        step_g = product - (g + (r - 1.0 + delta)) - step_d
         s = 1.0
         if damped:
             before = merit(p, g)
@@ -398,15 +399,23 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
 def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
                       restart):
     """GMRES on the active set ``idx``: ``A_CC p_C - Δ̃ 1 = r̃_C - 1`` with ``mean(p) = p̃∞``
-    (load control), or ``A_CC p_C = r̃_C - 1 + Δ̃``; returns ``([p_C, (Δ̃)], info)``."""
+    (load control), or ``A_CC p_C = r̃_C - 1 + Δ̃``; returns ``([p_C, (Δ̃)], info, A p)`` with
+    ``A p`` the product of the solution on the whole grid (GMRES's last). ``tight`` is
+    ``(relative, absolute)``: the solve stops at the larger of ``loose`` times the start's
+    residual and the smaller of ``relative·|rhs|`` and ``absolute`` (half the contact
+    tolerance: the residual's entries are the gaps on ``C``), never below ``1e-15·|rhs|``."""
     nc = idx.size
     load = mean_pressure is not None
     full = np.zeros(n)
+    last = [np.zeros(n)]
 
     def restrict(v, spectrum=None):
         full[:] = 0.0
         full[idx] = v
-        return apply(full, spectrum)[idx] if spectrum is not None else apply(full)[idx]
+        if spectrum is not None:
+            return apply(full, spectrum)[idx]
+        last[0] = apply(full)
+        return last[0][idx]
 
     if load:
         ones_pre = restrict(np.ones(nc), inverse)       # M 1, for the load row
@@ -436,9 +445,10 @@ def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, 
         rhs = heights[idx] - 1.0 + delta
         x0 = p[idx]
     # ``loose``: relative to the residual of the start (an inexact Newton step), never tighter
-    # than ``tight`` relative to the right-hand side
-    atol = tight * float(np.linalg.norm(rhs))
+    # than the tight bound
+    size = float(np.linalg.norm(rhs))
+    atol = max(min(tight[0] * size, tight[1]), 1e-15 * size)
     if loose is not None:
         atol = max(atol, loose * float(np.linalg.norm(rhs - matvec(x0))))
     sol, converged, _ = gmres(matvec, precondition, rhs, x0, atol, restart=restart)
-    return sol, 0 if converged else 1
+    return sol, 0 if converged else 1, last[0]
