@@ -6,7 +6,6 @@ import numpy as np
 
 from ..kernels.clausen import TWO_PI
 from ..methods.spectral.cohesive import CELLS_PER_ZONE, zone_cells
-from ..methods.spectral.solvers import LOSS_ITERATION, loss_ratio
 from ..plan import PlanStep, SolvePlan
 
 
@@ -28,12 +27,6 @@ def plan_steps(method, problem) -> SolvePlan:
     kernel = problem.areal_kernel()
     viscous = bool(np.any(kernel.prepared.all_weights > 0) and 0 < problem.zeta
                    and np.isfinite(problem.zeta))
-    # tan δ at the finest grid's frequencies along the sliding direction (the grid solves
-    # measure it on each grid's eigenvalues)
-    q = np.arange(1, max(nx, ny) // 2 + 1, dtype=float)
-    ratio = loss_ratio(kernel.multiplier(q * np.cos(kernel.direction),
-                                         q * np.sin(kernel.direction))) if viscous else 0.0
-    near = viscous and ratio <= LOSS_ITERATION
     need = method.memory(nx, ny, symmetric=not viscous)
     grids = " → ".join(f"{a}×{b}" for a, b in method.ladder(nx, ny))
     law = method.law(problem, float(np.max(problem.heights(nx, ny))))
@@ -65,11 +58,9 @@ def plan_steps(method, problem) -> SolvePlan:
                         "cell" + ("" if not viscous else
                                   f" + GMRES basis and directions, 2×{RESTART} vectors on "
                                   f"{PLANNED_CONTACT:.0%} of the cells")),
-        PlanStep(stage="solver", choice="Polonsky-Keer, the loss part iterated" if near else
-                 "active set + GMRES" if viscous else "Polonsky-Keer conjugate gradients",
-                 reason=(f"nearly elastic: loss ratio max|Im λ|/Re λ = {ratio:.2g} <= "
-                         f"{LOSS_ITERATION:g}") if near else
-                        f"viscoelastic operator (loss ratio {ratio:.2g})" if viscous else
+        PlanStep(stage="solver", choice="active set + GMRES" if viscous else
+                 "Polonsky-Keer conjugate gradients",
+                 reason="viscoelastic operator (not symmetric)" if viscous else
                         "symmetric operator"),
         PlanStep(stage="estimate", choice="Richardson on the area and μ between the two "
                                           "finest grids", reason=f"tolerance "

@@ -18,10 +18,8 @@ Method
   (Clausen), the rest by alias sums. Cached per (prepared kernel, ``N``) in
   :class:`SpectralPrepared`.
 * Solvers (:mod:`~viscocontact.methods.spectral.solvers`): preconditioned Polonsky-Keer conjugate
-  gradients when ``A`` is symmetric (elastic, or ζ at a limit), Polonsky-Keer solves with the
-  symmetric part and the loss part iterated when ``A`` is nearly elastic (``max|Im Λ|/Re Λ <=
-  0.1``, ζ near a limit), a primal-dual active set with right-preconditioned GMRES otherwise
-  (viscoelastic); load control (``p̃∞`` given) and penetration
+  gradients when ``A`` is symmetric (elastic, or ζ at a limit), a primal-dual active set with
+  right-preconditioned GMRES otherwise (viscoelastic); load control (``p̃∞`` given) and penetration
   control (``Δ̃`` given).
 * Grids (:mod:`~viscocontact.methods.spectral.method`): nested iteration from at most 256 cells,
   each grid starting from the previous one's solution; from the first grid with

@@ -27,7 +27,7 @@ from .cohesive import CELLS_PER_ZONE, GridLaw, cohesive_solve, law_violation, zo
 from .edges import contact_edges, runs
 from .grid import UniformGrid, cells_inside, refine
 from .operator import OperatorCache, convolve, power
-from .solvers import LOSS_ITERATION, GridSolution, grid_solve, loss_ratio, violation
+from .solvers import GridSolution, grid_solve, violation
 
 #: Fewest cells ``points`` may ask for.
 MIN_POINTS = 64
@@ -373,12 +373,6 @@ class Spectral(SolutionMethod):
         if op.symmetric:
             solver = PlanStep(stage="solver", choice="Polonsky-Keer conjugate gradients",
                               reason=f"the operator is symmetric (max|Im Λ|/max|Λ| = {asym:.2g})")
-        elif loss_ratio(lam) <= LOSS_ITERATION:
-            solver = PlanStep(stage="solver",
-                              choice="Polonsky-Keer on Re Λ, the loss part iterated (the active "
-                                     "set if that does not converge)",
-                              reason=f"nearly elastic: loss ratio max|Im Λ|/Re Λ = "
-                                     f"{loss_ratio(lam):.2g} <= {LOSS_ITERATION:g}")
         else:
             solver = PlanStep(stage="solver",
                               choice="active set (semismooth Newton) + GMRES preconditioned by "

@@ -22,12 +22,7 @@ circulant of :mod:`~viscocontact.methods.spectral.operator`.
   damped by a line search on ``|min(p, c g)|²``: the plain update cycles on strongly
   non-symmetric operators. Any ``A``: the viscoelastic operator is not symmetric.
 
-* :func:`loss_iterated` — a nearly elastic operator (ζ near a limit: the loss ratio
-  ``max|Im Λ|/Re Λ`` at most :data:`LOSS_ITERATION`) by Polonsky-Keer solves with its symmetric
-  part, the displacement of its loss part from the last pressure moved to the heights: each
-  solve gains ``-log10 κ`` digits (two solves at ζ = 1e-8), the elastic cost.
-
-All stop on the largest violation of the contact conditions, ``max(max_C |g|, max_{∉C} -g)``,
+Both stop on the largest violation of the contact conditions, ``max(max_C |g|, max_{∉C} -g)``,
 in units of the profile amplitude (the heights are normalised to 1), with ``p >= 0``.
 
 Limits. ``A`` has a positive definite symmetric part for every rheology (``Re K > 0``), so the
@@ -71,14 +66,6 @@ PRESOLVE = 1e-6
 #: A search direction ``t`` with ``tᵀAt <= FLAT·|t|²·max|Λ|`` has no stiffness.
 FLAT = 1e-12
 ACTIVE_SET = "active set"
-LOSS_ITERATED = "Polonsky-Keer, loss part iterated"
-#: Largest loss ratio ``κ = max|Im Λ|/Re Λ`` (:func:`loss_ratio`) for which :func:`grid_solve`
-#: iterates on the loss part with Polonsky-Keer solves (:func:`loss_iterated`): each solve
-#: reduces the error by ``κ`` at least, so that 0.1 takes at most 10 to round-off, each a few
-#: conjugate-gradient steps from the last; the active set costs 10-20 GMRES solves.
-LOSS_ITERATION = 0.1
-#: Most Polonsky-Keer solves of :func:`loss_iterated` before the active set takes over.
-LOSS_SOLVES = 30
 
 
 @attrs.frozen(kw_only=True, eq=False)
@@ -276,12 +263,6 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     """
     lam = circulant.eigenvalues
     inv = circulant.inverse
-    if np.ndim(inv) == 2:
-        # on a 2D grid the preconditioner runs in single precision (half the cost of its
-        # transforms): GMRES keeps the preconditioned directions (flexible GMRES), so its
-        # residual is that of the double-precision operator whatever the preconditioner's
-        # round-off (1e-7)
-        inv = inv.astype(np.complex64)
     r = np.asarray(heights, dtype=float)
     n = r.size
     load = mean_pressure is not None
@@ -402,13 +383,6 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
                              max_iterations=max_iterations, preconditioner=circulant.inverse,
                              **common)
     its = apps = 0
-    if loss_ratio(circulant.eigenvalues) <= LOSS_ITERATION:
-        near = loss_iterated(circulant, heights, start=start, max_iterations=max_iterations,
-                             **common)
-        if near.converged:
-            return near
-        start, start_penetration = near.pressure, near.penetration
-        its, apps, presolve = near.iterations, near.applications, False
     if presolve:
         sym = circulant.symmetric_part()
         first = polonsky_keer(sym, heights, start=start, max_iterations=max_iterations,
@@ -420,65 +394,6 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
                      krylov_tolerance=krylov_tolerance, max_iterations=max_updates, **common)
     return attrs.evolve(sol, iterations=sol.iterations + its,
                         applications=sol.applications + apps)
-
-
-def loss_ratio(eigenvalues) -> float:
-    """``κ = max |Im Λ_n|/Re Λ_n`` over the modes with ``Re Λ_n > 0``: the loss part of the
-    operator against its symmetric part (``tan δ`` at the grid's frequencies; 0 when elastic)."""
-    lam = np.asarray(eigenvalues)
-    real = lam.real
-    stiff = real > 0.0
-    if not stiff.any():
-        return float("inf")
-    return float(np.max(np.abs(lam.imag[stiff]) / real[stiff]))
-
-
-def loss_iterated(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
-                  tolerance: float = 1e-10, max_iterations: int = 20000,
-                  workers: int = 1) -> GridSolution:
-    """The contact problem of a nearly elastic operator ``A = S + K`` (``S`` its symmetric part,
-    ``K`` the loss part) by Polonsky-Keer solves with ``S``, the displacement ``K p`` of the last
-    pressure moved to the heights: ``p_{k+1}`` solves ``S p - (r̃ - K p_k - 1 + Δ̃) ⊥ p >= 0``.
-    The map ``p_k -> p_{k+1}`` contracts by ``κ`` (:func:`loss_ratio`) in the energy norm of
-    ``S`` (the contact solution is ``S``'s projection, and ``|xᵀKy| <= κ |x|_S |y|_S`` for the
-    circulants, hence for their restrictions to a contact set), so each solve, warm-started
-    from the last, gains ``-log10 κ`` digits. Converged when the contact conditions hold with the
-    whole operator ``A`` to ``tolerance``; else after :data:`LOSS_SOLVES` solves, or a solve
-    that fails, not converged (:func:`grid_solve` hands the last pressure to the active set)."""
-    lam = np.asarray(circulant.eigenvalues)
-    sym = lam.real.astype(complex)
-    pre = invert(sym)
-    loss = 1j * lam.imag
-    r = np.asarray(heights, dtype=float)
-    load = mean_pressure is not None
-    p = None if start is None else np.maximum(np.asarray(start, dtype=float), 0.0)
-    if p is not None and not p.any():
-        p = None
-    its = apps = 0
-    res, delta, message = np.inf, float("nan"), ""
-    for solve in range(1, LOSS_SOLVES + 1):
-        shifted = r if p is None else r - convolve(p, loss, workers)
-        sol = polonsky_keer(sym, shifted, mean_pressure=mean_pressure, penetration=penetration,
-                            start=p, tolerance=tolerance, max_iterations=max_iterations,
-                            preconditioner=pre, workers=workers)
-        its += sol.iterations
-        apps += sol.applications + (p is not None) + 1
-        p, delta = sol.pressure, (sol.penetration if load else float(penetration))
-        gap = convolve(p, lam, workers) - (r - 1.0 + delta)
-        res = violation(gap, p > 0)
-        if not sol.converged:
-            message = f"solve {solve} with the symmetric part: {sol.message}"
-            break
-        if res <= tolerance:
-            return GridSolution(pressure=p, penetration=delta, converged=True, residual=res,
-                                iterations=its, applications=apps, solver=LOSS_ITERATED,
-                                message=f"converged in {solve} Polonsky-Keer solves with the "
-                                        f"loss part iterated ({its} iterations)")
-    else:
-        message = f"no convergence in {LOSS_SOLVES} Polonsky-Keer solves (residual {res:.2g})"
-    assert p is not None, "at least one solve"
-    return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
-                        iterations=its, applications=apps, solver=LOSS_ITERATED, message=message)
 
 
 def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
