@@ -5,12 +5,17 @@ is the true residual ``|b - A x|``, which is what the tolerance is on. Orthogona
 classical Gram-Schmidt done twice (two matrix-vector products with the basis per step, as
 accurate as modified Gram-Schmidt, Giraud et al. 2005); the least-squares problem is updated with
 Givens rotations. The operator and the preconditioner are plain callables: each call is one
-product by FFT, the work that matters.
+product by FFT, the work that matters. The preconditioned directions ``M v_j`` are kept and the
+solution is built from them (flexible GMRES, Saad 1993): the preconditioner may vary from step
+to step (a single-precision one) without spoiling the residual, which is that of ``A``.
 
 References
 ----------
 Saad, Y. & Schultz, M. H. (1986). GMRES: a generalized minimal residual algorithm for solving
 nonsymmetric linear systems. SIAM J. Sci. Stat. Comput. 7, 856-869. doi:10.1137/0907058
+
+Saad, Y. (1993). A flexible inner-outer preconditioned GMRES algorithm. SIAM J. Sci. Comput.
+14, 461-469. doi:10.1137/0914028
 
 Giraud, L., Langou, J. & Rozložník, M. (2005). The loss of orthogonality in the Gram-Schmidt
 orthogonalization process. Comput. Math. Appl. 50, 1069-1075. doi:10.1016/j.camwa.2005.08.009

@@ -263,6 +263,12 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     """
     lam = circulant.eigenvalues
     inv = circulant.inverse
+    if np.ndim(inv) == 2:
+        # on a 2D grid the preconditioner runs in single precision (half the cost of its
+        # transforms): GMRES keeps the preconditioned directions (flexible GMRES), so its
+        # residual is that of the double-precision operator whatever the preconditioner's
+        # round-off (1e-7); the steps are those of the double-precision one
+        inv = inv.astype(np.complex64)
     r = np.asarray(heights, dtype=float)
     n = r.size
     load = mean_pressure is not None
