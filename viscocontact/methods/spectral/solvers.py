@@ -241,8 +241,8 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     reduces the merit ``|min(p, c g)|²`` and halved until it does otherwise (Armijo): a full step
     is the plain primal-dual active-set update, which can cycle on a strongly non-symmetric
     operator (a large ``β`` at ``ζ`` of order one), the damped one does not. The Krylov solves
-    are loose (:data:`LOOSE_KRYLOV` of their starting residual) until the set stops changing,
-    then tight. Converged when ``p >= 0`` and the contact conditions hold to ``tolerance``.
+    are loose (:data:`LOOSE_KRYLOV` of their starting residual) while the set changes, tight
+    on a set that a full step kept (the found set: its first solve is the tight one). Converged when ``p >= 0`` and the contact conditions hold to ``tolerance``.
 
     Parameters
     ----------
@@ -303,6 +303,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     damped = False
     floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
     previous: np.ndarray | None = None
+    full_step = False
     seen: set[bytes] = set()
     res = np.inf
     for it in range(1, max_iterations + 1):
@@ -325,6 +326,8 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
                 damped = True
             seen.clear()
         seen.add(key)
+        if loose is not None and full_step and np.array_equal(active, previous):
+            loose = None                  # the last full step kept the set: it is found
         idx = np.flatnonzero(active)
         sol, info, product = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n,
                                                loose, (tight, 0.5 * tolerance), restart)
@@ -346,12 +349,10 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         g = g + s * step_g
         delta += s * step_d
         res = violation(g, p > 0)
-        if s == 1.0 and previous is not None and np.array_equal(active, previous):
-            if loose is not None:
-                loose = None              # the set is found: solve on it tightly next
-            elif res > tolerance and tight > 1e-15:
-                tight = max(1e-3 * tight, 1e-15)  # the Krylov solve falls short: tighten it
-        previous = active
+        if (s == 1.0 and loose is None and np.array_equal(active, previous) and res > tolerance
+                and tight > 1e-15):
+            tight = max(1e-3 * tight, 1e-15)      # the Krylov solve falls short: tighten it
+        previous, full_step = active, s == 1.0
         if loose is None and info == 0 and res <= tolerance and \
                 np.min(p) >= -tolerance * stiffness:
             p = np.maximum(p, 0.0)
