@@ -242,7 +242,9 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     is the plain primal-dual active-set update, which can cycle on a strongly non-symmetric
     operator (a large ``β`` at ``ζ`` of order one), the damped one does not. The Krylov solves
     are loose (:data:`LOOSE_KRYLOV` of their starting residual) while the set changes, tight
-    on a set that a full step kept (the found set: its first solve is the tight one). Converged when ``p >= 0`` and the contact conditions hold to ``tolerance``.
+    on a set that a full step kept (the found set: its first solve is the tight one), to half
+    the contact tolerance or ``krylov_tolerance``, whichever is looser. Converged when
+    ``p >= 0`` and the contact conditions hold to ``tolerance``.
 
     Parameters
     ----------
