@@ -4,10 +4,11 @@ r"""Restarted GMRES with right preconditioning, for the active-set systems of th
 is the true residual ``|b - A x|``, which is what the tolerance is on. Orthogonalisation is
 classical Gram-Schmidt, repeated when the first pass cancels most of the vector (Daniel et al.
 1976; twice is as accurate as modified Gram-Schmidt, Giraud et al. 2005); the least-squares
-problem is updated with Givens rotations. The operator and the preconditioner are plain callables: each call is one
-product by FFT, the work that matters. The preconditioned directions ``M v_j`` are kept and the
-solution is built from them (flexible GMRES, Saad 1993): the preconditioner may vary from step
-to step (a single-precision one) without spoiling the residual, which is that of ``A``.
+problem is updated with Givens rotations. The operator and the preconditioner are plain
+callables: each call is one product by FFT, the work that matters. The preconditioned
+directions ``M v_j`` are kept and the solution is built from them (flexible GMRES, Saad 1993):
+the preconditioner may vary from step to step (a single-precision one) without spoiling the
+residual, which is that of ``A``.
 
 References
 ----------
