@@ -4,6 +4,7 @@
     python benchmarks/spectral.py --orders          # observed convergence orders of Ã and μ
     python benchmarks/spectral.py --profile         # where a solve spends its time (cProfile)
     python benchmarks/spectral.py --betas           # robustness of the active set against β
+    python benchmarks/spectral.py --near-elastic    # ζ -> 0 against the elastic solid's solve
 
 The acceptance case: ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=s)`` on a
 half-plane at ``p̃∞ = 0.25``, elastic and standard linear solid β = 10 at ζ = 1e-2.
@@ -154,6 +155,38 @@ def betas():
               f"{sum(c for c, _ in runs)} of {len(runs)}, slowest {max(t for _, t in runs):.2f} s")
 
 
+def near_elastic(seeds, repeats):
+    """ζ -> 0 against the relaxed elastic solid: ``Spectral()`` on a standard linear solid β = 10
+    at ζ = 1e-8, 1e-5 and 1e-2 and on ``Elastic()`` (its relaxed modulus: Polonsky-Keer
+    conjugate gradients on every grid), the same profile and load, alternating, from scratch
+    (``problem.prepare()`` included), medians of ``repeats``; printed per ζ: both times, their
+    ratio, the finest grid, the operator products of each and the last grid's solver (CPU
+    time: the machine may be shared)."""
+    print(f"p̃∞ = {LOAD}, default tolerance; median of {repeats} runs each, alternating")
+    print("zeta    seed  elastic ms  sls ms  ratio  cells  products e/s  solver   (CPU ms)")
+    for zeta in (1e-8, 1e-5, 1e-2):
+        ratios = []
+        for seed in seeds:
+            elastic = problem(rough(seed), Elastic(), 0.0)
+            sls = problem(rough(seed), StandardLinearSolid(beta=10.0), zeta)
+            te, ts, re, rs = [], [], None, None
+            for _ in range(repeats):
+                start = time.process_time()
+                re = Spectral().solve(elastic)
+                te.append(time.process_time() - start)
+                start = time.process_time()
+                rs = Spectral().solve(sls)
+                ts.append(time.process_time() - start)
+            assert re is not None and rs is not None
+            a, b = float(np.median(te)), float(np.median(ts))
+            ratios.append(b / a)
+            solver = rs.extras.get("solver", "")
+            print(f"{zeta:6.0e} {seed:5d} {a * 1e3:11.1f} {b * 1e3:7.1f} {b / a:6.2f} "
+                  f"{rs.extras['points']:6d} {re.function_evaluations:6d}/"
+                  f"{rs.function_evaluations:<6d} {solver}")
+        print(f"ζ = {zeta:g}: median ratio {np.median(ratios):.2f}")
+
+
 def profile_solves():
     for label, rheology, zeta in RHEOLOGIES:
         prob = problem(rough(0), rheology, zeta)
@@ -175,6 +208,7 @@ def main(argv=None) -> int:
     ap.add_argument("--orders", action="store_true")
     ap.add_argument("--profile", action="store_true")
     ap.add_argument("--betas", action="store_true")
+    ap.add_argument("--near-elastic", action="store_true")
     args = ap.parse_args(argv)
     if args.repeats < 1:
         print(f"--repeats = {args.repeats} is not allowed: expected an integer >= 1",
@@ -186,6 +220,8 @@ def main(argv=None) -> int:
         profile_solves()
     elif args.betas:
         betas()
+    elif args.near_elastic:
+        near_elastic([int(s) for s in args.seeds.split(",")], args.repeats)
     else:
         side_by_side([int(s) for s in args.seeds.split(",")], args.repeats, args.reference)
     return 0

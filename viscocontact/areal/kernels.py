@@ -163,10 +163,13 @@ class ArealKernel:
     def _alias_sum(self, nx: int, ny: int, aliases: int, power: int, row, weights) -> np.ndarray:
         """``Σ_{l,k} w_l w_k row(q·e) S(|q|)/|q| (sinc_x sinc_y)^power`` over ``q = (n + l nx,
         (j + k ny)/a)``; with ``e = x`` the row factor is taken out of the inner sum over ``k``
-        (it depends on ``qx`` alone), which leaves real arrays there."""
+        (it depends on ``qx`` alone), which leaves real arrays there, even in ``qy``: the rows
+        ``qy <= 0`` are those of ``-qy``, summed once (half the work)."""
         n = np.arange(nx // 2 + 1, dtype=float)[None, :]      # integer indices, broadcast
         j = np.fft.fftfreq(ny, 1.0 / ny)[:, None]
-        total = np.zeros((ny, nx // 2 + 1), dtype=complex)
+        if self.along_x:
+            j = j[:ny // 2 + 1]                               # 0, 1, ..., ny/2 - 1, -ny/2
+        total = np.zeros((j.size, nx // 2 + 1), dtype=complex)
         for l, wl in zip(range(-aliases, aliases + 1), weights):
             mx = n + l * nx
             sx = wl * np.sinc(mx / nx) ** power
@@ -176,6 +179,8 @@ class ArealKernel:
                 part = self._radial(np.hypot(mx, my)) * (wk * np.sinc((j + k * ny) / ny) ** power)
                 inner += part if self.along_x else part * row(self.frequency(mx, my))
             total += (sx * row(mx)) * inner if self.along_x else sx * inner
+        if self.along_x:
+            total = np.concatenate([total, total[ny // 2 - 1:0:-1]])
         return total
 
     def eigenvalues(self, nx: int, ny: int, aliases: int = ALIASES) -> np.ndarray:

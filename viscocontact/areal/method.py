@@ -44,7 +44,7 @@ from ..methods.spectral.traction import grid_law
 from ..result import ContactResult, SolveStatus
 from .kernels import ArealKernel
 from .problem import ArealProblem
-from .results import area_fraction, cell_rise, friction, patch_statistics
+from .results import area_fraction, cell_rise, edge_corrections, friction, patch_statistics
 from .planning import BYTES_PER_CELL, PLANNED_CONTACT, RESTART
 
 #: The ladder of grids begins at this many cells per side or fewer.
@@ -289,7 +289,8 @@ class ArealSpectral:
         load, pen = problem.mean_pressure, problem.penetration
         previous = ladder.current
         start = None if previous is None else _refine(previous.solution.pressure,
-                                                       previous.level, inside=law is None)
+                                                       previous.level, inside=law is None,
+                                                       gap=previous.gap)
         start_pen = None if previous is None else previous.solution.penetration
         if law is None:
             sol = grid_solve(level.circulant, level.heights, mean_pressure=load,
@@ -439,22 +440,35 @@ def _cohesive_extras(law: GridLaw, current: Measured, extras: dict) -> None:
             f"{CELLS_PER_ZONE:g}): under-resolved along x")
 
 
-def _refine(pressure: np.ndarray, level: Level, inside: bool = True) -> np.ndarray:
+def _refine(pressure: np.ndarray, level: Level, inside: bool = True,
+            gap: np.ndarray | None = None) -> np.ndarray:
     """A coarse pressure carried to the grid twice as fine: the coarse values at the coinciding
     centres, the mean of the neighbours between them; with ``inside`` only where all of those
-    neighbours carry load (zero elsewhere), so that the first loaded set lies inside the coarse
-    contacts (flat, row by row)."""
+    neighbours carry load, or where one does and the coarse solution's edge (``gap`` given: its
+    sub-cell place along the grid lines, :func:`~.results.edge_corrections`, as the area places
+    it) lies beyond the fine centre, half a coarse cell out; zero elsewhere. The first loaded
+    set is then the fine grid's to within the edge estimates (flat, row by row)."""
     p = pressure.reshape(level.ny, level.nx)
+    if gap is not None and inside:
+        g = gap.reshape(level.ny, level.nx)
+        beyond = (edge_corrections(p, g, axis=1) > 0, edge_corrections(p, g, axis=0) > 0)
+    else:
+        beyond = (np.zeros(p.shape, bool), np.zeros(p.shape, bool))
 
-    def between(a, axis):
+    def between(a, axis, out_beyond):
         right = np.roll(a, -1, axis=axis)
         mean = 0.5 * (a + right)
-        return np.where((a > 0) & (right > 0), mean, 0.0) if inside else mean
+        if not inside:
+            return mean
+        # one side loaded: the loaded side's edge is past the middle
+        reach = (a > 0) & out_beyond | (right > 0) & np.roll(out_beyond, -1, axis=axis)
+        return np.where(((a > 0) & (right > 0)) | reach, mean, 0.0)
 
     out = np.empty((2 * level.ny, 2 * level.nx))
     out[0::2, 0::2] = p
-    out[0::2, 1::2] = between(p, 1)
-    out[1::2, :] = between(out[0::2, :], 0)
+    out[0::2, 1::2] = between(p, 1, beyond[0])
+    # across the rows: the coarse columns' edges, each fine column with its coarse column's
+    out[1::2, :] = between(out[0::2, :], 0, np.repeat(beyond[1], 2, axis=1))
     return out.ravel()
 
 

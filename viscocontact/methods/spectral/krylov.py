@@ -2,15 +2,25 @@ r"""Restarted GMRES with right preconditioning, for the active-set systems of th
 
 ``A M y = b - A x0``, ``x = x0 + M y``: with the preconditioner on the right the Arnoldi residual
 is the true residual ``|b - A x|``, which is what the tolerance is on. Orthogonalisation is
-classical Gram-Schmidt done twice (two matrix-vector products with the basis per step, as
-accurate as modified Gram-Schmidt, Giraud et al. 2005); the least-squares problem is updated with
-Givens rotations. The operator and the preconditioner are plain callables: each call is one
-product by FFT, the work that matters.
+classical Gram-Schmidt, repeated when the first pass cancels most of the vector (Daniel et al.
+1976; twice is as accurate as modified Gram-Schmidt, Giraud et al. 2005); the least-squares
+problem is updated with Givens rotations. The operator and the preconditioner are plain
+callables: each call is one product by FFT, the work that matters. The preconditioned
+directions ``M v_j`` are kept and the solution is built from them (flexible GMRES, Saad 1993):
+the preconditioner may vary from step to step (a single-precision one) without spoiling the
+residual, which is that of ``A``.
 
 References
 ----------
 Saad, Y. & Schultz, M. H. (1986). GMRES: a generalized minimal residual algorithm for solving
 nonsymmetric linear systems. SIAM J. Sci. Stat. Comput. 7, 856-869. doi:10.1137/0907058
+
+Daniel, J. W., Gragg, W. B., Kaufman, L. & Stewart, G. W. (1976). Reorthogonalization and stable
+algorithms for updating the Gram-Schmidt QR factorization. Math. Comp. 30, 772-795.
+doi:10.1090/S0025-5718-1976-0431641-8
+
+Saad, Y. (1993). A flexible inner-outer preconditioned GMRES algorithm. SIAM J. Sci. Comput.
+14, 461-469. doi:10.1137/0914028
 
 Giraud, L., Langou, J. & Rozložník, M. (2005). The loss of orthogonality in the Gram-Schmidt
 orthogonalization process. Comput. Math. Appl. 50, 1069-1075. doi:10.1016/j.camwa.2005.08.009
@@ -20,6 +30,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
+#: A Gram-Schmidt pass that leaves less than this share of the vector's norm lost orthogonality
+#: to cancellation and is repeated (Daniel, Gragg, Kaufman & Stewart 1976: 1/√2).
+REORTHOGONALISE = 1.0 / math.sqrt(2.0)
 
 
 def gmres(matvec, precondition, rhs, x0, atol: float, max_iterations: int = 400,
@@ -64,12 +78,15 @@ def gmres(matvec, precondition, rhs, x0, atol: float, max_iterations: int = 400,
             directions[j] = precondition(basis[j])
             w = matvec(directions[j])
             steps += 1
+            before = float(np.linalg.norm(w))
             h = basis[:j + 1] @ w
             w -= h @ basis[:j + 1]
-            h2 = basis[:j + 1] @ w                   # second pass of classical Gram-Schmidt
-            w -= h2 @ basis[:j + 1]
-            h += h2
             norm_w = float(np.linalg.norm(w))
+            if norm_w < REORTHOGONALISE * before:    # cancellation: a second pass
+                h2 = basis[:j + 1] @ w
+                w -= h2 @ basis[:j + 1]
+                h += h2
+                norm_w = float(np.linalg.norm(w))
             col = np.append(h, norm_w)
             for i in range(j):                       # the previous rotations on the new column
                 a, b = col[i], col[i + 1]

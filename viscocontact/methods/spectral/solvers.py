@@ -241,8 +241,10 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     reduces the merit ``|min(p, c g)|²`` and halved until it does otherwise (Armijo): a full step
     is the plain primal-dual active-set update, which can cycle on a strongly non-symmetric
     operator (a large ``β`` at ``ζ`` of order one), the damped one does not. The Krylov solves
-    are loose (:data:`LOOSE_KRYLOV` of their starting residual) until the set stops changing,
-    then tight. Converged when ``p >= 0`` and the contact conditions hold to ``tolerance``.
+    are loose (:data:`LOOSE_KRYLOV` of their starting residual) while the set changes, tight
+    on a set that a full step kept (the found set: its first solve is the tight one), to half
+    the contact tolerance or ``krylov_tolerance``, whichever is looser. Converged when
+    ``p >= 0`` and the contact conditions hold to ``tolerance``.
 
     Parameters
     ----------
@@ -263,6 +265,12 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     """
     lam = circulant.eigenvalues
     inv = circulant.inverse
+    if np.ndim(inv) == 2:
+        # on a 2D grid the preconditioner runs in single precision (half the cost of its
+        # transforms): GMRES keeps the preconditioned directions (flexible GMRES), so its
+        # residual is that of the double-precision operator whatever the preconditioner's
+        # round-off (1e-7); the steps are those of the double-precision one
+        inv = inv.astype(np.complex64)
     r = np.asarray(heights, dtype=float)
     n = r.size
     load = mean_pressure is not None
@@ -297,6 +305,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     damped = False
     floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
     previous: np.ndarray | None = None
+    full_step = False
     seen: set[bytes] = set()
     res = np.inf
     for it in range(1, max_iterations + 1):
@@ -319,14 +328,17 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
                 damped = True
             seen.clear()
         seen.add(key)
+        if loose is not None and full_step and np.array_equal(active, previous):
+            loose = None                  # the last full step kept the set: it is found
         idx = np.flatnonzero(active)
-        sol, info = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n, loose,
-                                      tight, restart)
+        sol, info, product = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n,
+                                               loose, (tight, 0.5 * tolerance), restart)
         target = np.zeros(n)
         target[idx] = sol[:idx.size]
         step_p = target - p
         step_d = float(sol[idx.size]) - delta if load else 0.0
-        step_g = apply(step_p) - step_d
+        # A·target is GMRES's last product: the step of the gaps without another one
+        step_g = product - (g + (r - 1.0 + delta)) - step_d
         s = 1.0
         if damped:
             before = merit(p, g)
@@ -339,12 +351,10 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         g = g + s * step_g
         delta += s * step_d
         res = violation(g, p > 0)
-        if s == 1.0 and previous is not None and np.array_equal(active, previous):
-            if loose is not None:
-                loose = None              # the set is found: solve on it tightly next
-            elif res > tolerance and tight > 1e-15:
-                tight = max(1e-3 * tight, 1e-15)  # the Krylov solve falls short: tighten it
-        previous = active
+        if (s == 1.0 and loose is None and np.array_equal(active, previous) and res > tolerance
+                and tight > 1e-15):
+            tight = max(1e-3 * tight, 1e-15)      # the Krylov solve falls short: tighten it
+        previous, full_step = active, s == 1.0
         if loose is None and info == 0 and res <= tolerance and \
                 np.min(p) >= -tolerance * stiffness:
             p = np.maximum(p, 0.0)
@@ -398,15 +408,23 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
 def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
                       restart):
     """GMRES on the active set ``idx``: ``A_CC p_C - Δ̃ 1 = r̃_C - 1`` with ``mean(p) = p̃∞``
-    (load control), or ``A_CC p_C = r̃_C - 1 + Δ̃``; returns ``([p_C, (Δ̃)], info)``."""
+    (load control), or ``A_CC p_C = r̃_C - 1 + Δ̃``; returns ``([p_C, (Δ̃)], info, A p)`` with
+    ``A p`` the product of the solution on the whole grid (GMRES's last). ``tight`` is
+    ``(relative, absolute)``: the solve stops at the larger of ``loose`` times the start's
+    residual and the smaller of ``relative·|rhs|`` and ``absolute`` (half the contact
+    tolerance: the residual's entries are the gaps on ``C``), never below ``1e-15·|rhs|``."""
     nc = idx.size
     load = mean_pressure is not None
     full = np.zeros(n)
+    last = [np.zeros(n)]
 
     def restrict(v, spectrum=None):
         full[:] = 0.0
         full[idx] = v
-        return apply(full, spectrum)[idx] if spectrum is not None else apply(full)[idx]
+        if spectrum is not None:
+            return apply(full, spectrum)[idx]
+        last[0] = apply(full)
+        return last[0][idx]
 
     if load:
         ones_pre = restrict(np.ones(nc), inverse)       # M 1, for the load row
@@ -436,9 +454,10 @@ def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, 
         rhs = heights[idx] - 1.0 + delta
         x0 = p[idx]
     # ``loose``: relative to the residual of the start (an inexact Newton step), never tighter
-    # than ``tight`` relative to the right-hand side
-    atol = tight * float(np.linalg.norm(rhs))
+    # than the tight bound
+    size = float(np.linalg.norm(rhs))
+    atol = max(min(tight[0] * size, tight[1]), 1e-15 * size)
     if loose is not None:
         atol = max(atol, loose * float(np.linalg.norm(rhs - matvec(x0))))
     sol, converged, _ = gmres(matvec, precondition, rhs, x0, atol, restart=restart)
-    return sol, 0 if converged else 1
+    return sol, 0 if converged else 1, last[0]
