@@ -323,9 +323,9 @@ def judge(scene, result, *, seconds: float = 0.0, warned: tuple[str, ...] = ()) 
     common = dict(message=result.message, warnings=warned, seconds=seconds, method=result.method)
     if not result.converged:
         kind = classify(result.message)
-        failures: tuple[str, ...] = (() if kind == "scene"    # (the message says why)
-                                     else (f"not converged ({kind})",))
-        return Outcome(outcome=kind, failures=failures, **common)
+        failed: tuple[str, ...] = (() if kind == "scene"      # (the message says why)
+                                   else (f"not converged ({kind})",))
+        return Outcome(outcome=kind, failures=failed, **common)
     failures, used, values = check(scene, result)
     outside = bool(result.extras.get("outside_model"))
     return Outcome(outcome="outside-model" if outside else "converged", failures=tuple(failures),

@@ -223,14 +223,13 @@ class _Approach:
             if self.counts[0] >= self.settings.max_steps:
                 return self._outcome(trial, f"{self.settings.max_steps} solves before the "
                                             "target")
-            ok = trial.solution.converged
-            new = state_of(trial) if ok else None
-            smooth = ok and _same_structure(self.state, new)
+            new = state_of(trial) if trial.solution.converged else None
+            smooth = new is not None and _same_structure(self.state, new)
             shorter = None if smooth else self._shorter(step)
             if shorter is not None:
                 step = shorter
                 continue
-            if not ok:
+            if new is None:
                 trial = self._snap(aim)
                 if not trial.solution.converged:
                     return self._outcome(trial, f"no equilibrium at Δ̃ = {aim:.6g} within a "
@@ -242,11 +241,12 @@ class _Approach:
                                              after=new))
             if load and new.mean_pressure >= mean_pressure:
                 final = self._to_load(trial, new, mean_pressure)
-                if final.solution.converged or self._shorter(step) is None:
+                shorter = self._shorter(step)
+                if final.solution.converged or shorter is None:
                     return self._outcome(final, None if final.solution.converged else
                                          f"no equilibrium at p̃∞ = {mean_pressure:g} from the "
                                          f"states at Δ̃ = {here:.6g} and {aim:.6g}")
-                step = self._shorter(step)
+                step = shorter
                 continue
             self.current, self.state = trial, new
             self.history.append(new)

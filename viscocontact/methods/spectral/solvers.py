@@ -328,7 +328,8 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
                 damped = True
             seen.clear()
         seen.add(key)
-        if loose is not None and full_step and np.array_equal(active, previous):
+        if (loose is not None and full_step and previous is not None
+                and np.array_equal(active, previous)):
             loose = None                  # the last full step kept the set: it is found
         idx = np.flatnonzero(active)
         sol, info, product = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n,
@@ -351,8 +352,8 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         g = g + s * step_g
         delta += s * step_d
         res = violation(g, p > 0)
-        if (s == 1.0 and loose is None and np.array_equal(active, previous) and res > tolerance
-                and tight > 1e-15):
+        if (s == 1.0 and loose is None and previous is not None
+                and np.array_equal(active, previous) and res > tolerance and tight > 1e-15):
             tight = max(1e-3 * tight, 1e-15)      # the Krylov solve falls short: tighten it
         previous, full_step = active, s == 1.0
         if loose is None and info == 0 and res <= tolerance and \
