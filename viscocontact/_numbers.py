@@ -61,3 +61,13 @@ def _freeze(mapping: Mapping | None) -> Mapping | None:
 
 def _agree(a: float, b: float) -> bool:
     return math.isclose(float(a), float(b), rel_tol=REL_TOL, abs_tol=0.0)
+
+
+def check_one_poisson(kernel, poisson: float) -> None:
+    """A kernel's own Poisson ratio (a layer's) must be the scene's: one material, one ratio."""
+    knu = getattr(kernel, "poisson", None)
+    if knu is not None and not _agree(knu, poisson):
+        from .errors import ValidationError
+
+        raise ValidationError("kernel.poisson", knu, f"the scene's poisson = {poisson!r} "
+                                                     "(one material, one Poisson ratio)")

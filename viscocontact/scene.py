@@ -28,7 +28,7 @@ from typing import Any, Mapping
 import attrs
 
 from . import _registry, defaults
-from ._numbers import _agree, _as_float, _check_number, _freeze, _is_number
+from ._numbers import _agree, _as_float, _check_number, _freeze, _is_number, check_one_poisson
 from ._toml import dumps
 from .components import (COMPONENT_SECTIONS, ComponentSpec, _has_param, _init_fields, _param,
                          _plain, _registry_for, build_component, did_you_mean, dump_component,
@@ -162,10 +162,7 @@ class Scene:
                                                        validator=_check_physical, hash=False)
 
     def __attrs_post_init__(self):
-        knu = getattr(self.kernel, "poisson", None)
-        if knu is not None and not _agree(knu, self.poisson):
-            raise ValidationError("kernel.poisson", knu, f"the scene's poisson = {self.poisson!r} "
-                                                         "(one material, one Poisson ratio)")
+        check_one_poisson(self.kernel, self.poisson)
         if self.physical is not None:
             self._check_physical_agrees(self.physical)
             self._warn_outside_model(self.physical)

@@ -27,7 +27,7 @@ from typing import Any, Mapping
 import attrs
 
 from .. import scene as _scene
-from .._numbers import _agree, _as_float, _check_number, _freeze
+from .._numbers import _as_float, _check_number, _freeze, check_one_poisson
 from .._toml import dumps
 from ..components import _instantiate, build_component, did_you_mean, dump_component, kind_of
 from ..errors import ValidationError
@@ -151,10 +151,7 @@ class ArealScene:
                                                        validator=_check_physical, hash=False)
 
     def __attrs_post_init__(self):
-        knu = getattr(self.kernel, "poisson", None)
-        if knu is not None and not _agree(knu, self.poisson):
-            raise ValidationError("kernel.poisson", knu, f"the scene's poisson = {self.poisson!r} "
-                                                         "(one material, one Poisson ratio)")
+        check_one_poisson(self.kernel, self.poisson)
         if self.adhesive and self.adhesion.cohesive_law(1.0) is None and \
                 float(getattr(self.adhesion, "gamma", 0.0) or 0.0) > 0:
             raise ValidationError("adhesion.kind", kind_of("adhesion", self.adhesion),
