@@ -343,6 +343,20 @@ def scene_text(source: str | Path) -> str:
     return scene_path(source).read_text(encoding="utf-8")
 
 
+def check_sections(data: Mapping[str, Any], sections) -> None:
+    """Every table of a scene's ``data`` is one of ``sections`` and every other key a
+    top-level key (:data:`TOP_LEVEL_KEYS`), else a :class:`ValidationError` naming it."""
+    for key, value in data.items():
+        if isinstance(value, Mapping):
+            if key not in sections:
+                raise ValidationError(key, "[table]", f"one of the sections {list(sections)}"
+                                                      f"{did_you_mean(key, sections)}")
+        elif key not in TOP_LEVEL_KEYS:
+            raise ValidationError(key, value, f"one of the sections {list(sections)} or a "
+                                              f"top-level key in {list(TOP_LEVEL_KEYS)}"
+                                              f"{did_you_mean(key, (*sections, *TOP_LEVEL_KEYS))}")
+
+
 def _from_dict(data: Mapping[str, Any]) -> Scene:
     if not isinstance(data, Mapping):
         raise ValidationError("scene", data, "a table of sections")
@@ -350,15 +364,7 @@ def _from_dict(data: Mapping[str, Any]) -> Scene:
         raise ValidationError("surface", "[table]", "a [profile] table: a scene with a [surface] "
                                                     "is areal (read it with read_scene or "
                                                     "ArealScene.from_dict)")
-    for key, value in data.items():
-        if isinstance(value, Mapping):
-            if key not in SECTIONS:
-                raise ValidationError(key, "[table]", f"one of the sections {list(SECTIONS)}"
-                                                      f"{did_you_mean(key, SECTIONS)}")
-        elif key not in TOP_LEVEL_KEYS:
-            raise ValidationError(key, value, f"one of the sections {list(SECTIONS)} or a "
-                                              f"top-level key in {list(TOP_LEVEL_KEYS)}"
-                                              f"{did_you_mean(key, (*SECTIONS, *TOP_LEVEL_KEYS))}")
+    check_sections(data, SECTIONS)
     physical = _section(data, "physical")
     _check_physical(None, None, physical)
     phys = physical or {}

@@ -284,14 +284,7 @@ def _check_sections(data: Mapping[str, Any]) -> None:
         raise ValidationError("solver", "[table]", "no [solver] in an areal scene: the areal "
                                                    "spectral method has its own grid solvers "
                                                    "(options in [method])")
-    for key, value in data.items():
-        if isinstance(value, Mapping):
-            if key not in SECTIONS:
-                raise ValidationError(key, "[table]", f"one of the sections {list(SECTIONS)}"
-                                                      f"{did_you_mean(key, SECTIONS)}")
-        elif key not in _scene.TOP_LEVEL_KEYS:
-            raise ValidationError(key, value, f"one of the sections {list(SECTIONS)} or a "
-                                              f"top-level key in {list(_scene.TOP_LEVEL_KEYS)}")
+    _scene.check_sections(data, SECTIONS)
 
 
 def _from_dict(data: Mapping[str, Any]) -> ArealScene:
