@@ -4,20 +4,27 @@ The contact is pressed on at constant speed, slowly: its state follows a branch 
 in the penetration ``Δ̃``, from the first contact at the highest peak to the target penetration,
 or under load control to the target load. A continuation follows the branch:
 
-* **steps** in ``Δ̃`` start from the branch's tangent (:meth:`Path.predicted`) and are solved at
-  fixed penetration; a step is accepted when its corrector stays within :attr:`jumped
-  <ApproachOptions.jumped>` half-widths of the prediction, and the next step follows from the
-  corrector's distance (:meth:`Path.next_step`). A step that fails is halved.
-* **events** are what ends the branch within a step: a *fold* in ``Δ̃`` (no equilibrium
-  near the prediction however short the step), a *load peak* under load control (the load
-  falls along the branch before it reaches the target: under load control the branch is
-  unstable past its peak), *closure* over the period, and the *target*. A step that meets a
-  fold, a peak or closure is halved until it is :attr:`resolution <ApproachOptions.resolution>`
-  of the path step long, which locates the event to that resolution; births, merges and
-  detachments within a step are handled by the equilibrium solve (its restarts) and recorded.
-* every **jump** (the first contact settling, a fold, a load peak) follows one stated rule: the
-  overdamped motion of the edges (:mod:`~viscocontact.methods.bem.relax`) from the last state on
-  the branch, at the control just past the event, until the edges stop.
+* **steps** in the controlled quantity start from the branch's tangent (:meth:`Path.predicted`)
+  and are solved at a fixed control with the contact set held; a step is accepted when its
+  corrector stays within :attr:`jumped <ApproachOptions.jumped>` half-widths of the prediction
+  and the contact set stays as it was, and the next step follows from the corrector's distance
+  (:meth:`Path.next_step`).
+* **events** are what ends the branch within a step: a *fold* (no equilibrium near the
+  prediction however short the step; under load control also the *load peak*, past which the
+  branch is unstable), a *birth* (the profile penetrates the solid outside the contacts), a
+  *merge*, *detachment* or *split* of contacts, *closure* over the period, and the *target*.
+  A step that meets one is shortened, towards the fold the branch's curvature predicts
+  (:meth:`fold_ahead`) or the birth the smallest gap's secant predicts (:meth:`birth_ahead`),
+  else by halves, until the event lies within :attr:`resolution <ApproachOptions.resolution>`
+  of the path step.
+* every **action** that leaves the branch (the first contact settling, a fold, a contact-set
+  change) follows one stated rule: the overdamped motion of the edges
+  (:mod:`~viscocontact.methods.bem.relax`) from the last state on the branch, at the control
+  just past the event, until the edges stop; contacts are born, merge and detach on the way.
+
+An adhesionless contact (whose equilibrium is unique) is followed in the penetration from just
+past first touch, its steps halved where the solver fails; where no adhesive contact holds at
+first touch, the first penetration at which one holds is located (:meth:`Approach.held`).
 
 So the state reached is a property of the scene and of this history, converged as the path
 step and the resolution shrink (``benchmarks/approach_paths.py`` compares a four times finer
