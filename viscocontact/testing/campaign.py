@@ -90,10 +90,11 @@ FRICTION_ZERO = 1e-5
 
 #: Words of a not-converged message that name a property of the scene (lower case).
 SCENE_REASONS = ("no equilibrium", "unstable under load control", "outside the model",
-                 "pulls off", "pull-off", "detaches", "refused")
+                 "pulls off", "pull-off", "detaches", "refused", "no steady state")
 #: Words that name the solver's path: these are failures of the campaign.
 PATH_REASONS = ("still changing", "budget", "evaluations", "stalled", "not finite",
-                "time limit", "iterations", "did not converge", "no progress", "cycles")
+                "time limit", "iterations", "did not converge", "no progress", "cycles",
+                "did not stop")
 
 
 def _log_uniform(rng, lo: float, hi: float) -> float:

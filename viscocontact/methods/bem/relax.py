@@ -221,7 +221,12 @@ class Relaxation:
             return self._failed(x, f"did not stop within {self.max_steps} steps")
         self.eq.log.event(f"the edges moved in {moved} steps of their overdamped motion")
         out = self._settle(x, control)
-        return self._failed(x, "met a merge or a split it does not reach") if out is None else out
+        if out is None:
+            # at rest, the held solve meets a merge or a split (a tensile contact, which no edge
+            # motion opens): the equilibrium solve makes it
+            self.eq.log.event("the edges came to rest next to a change of the contact set")
+            return self.eq.solve(x, control, use_fallback=False, **self._finish)
+        return out
 
     def _fresh(self, system, x: np.ndarray, control: Control):
         """A new edge system for ``x`` when the mesh zones or element counts of ``system``
