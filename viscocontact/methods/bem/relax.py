@@ -75,10 +75,12 @@ class Relaxation:
     tolerance : float
         Largest local error of a step, in half-widths.
     max_steps : int
-        Accepted and rejected steps allowed before the motion is given up (None returned).
+        Accepted and rejected steps allowed before the motion is given up (a failed state). A
+        contact that travels is found once it has gone round the period, which can take more
+        than a thousand steps (campaign seeds 196 and 213: 400 steps ended them unexplained).
     """
 
-    def __init__(self, equilibrium, closed, tolerance: float = 0.02, max_steps: int = 400):
+    def __init__(self, equilibrium, closed, tolerance: float = 0.02, max_steps: int = 2000):
         self.eq = equilibrium
         self.closed = closed
         self.tolerance = tolerance
