@@ -54,13 +54,17 @@ DEFAULT_METHOD = defaults.METHOD
 
 
 
-def _is_instance_of_base(kind: str):
+def _is_instance_of_base(kind: str, owner: str = "Scene",
+                         specs: tuple[str, ...] = ("adhesion", "solver", "method")):
+    """An attrs validator: the field holds an instance of the ``kind`` registry's base class
+    (a :class:`ComponentSpec` is accepted for the fields named in ``specs``); the error names
+    ``owner.field``."""
     def check(inst, attribute, value):
-        if isinstance(value, ComponentSpec) and attribute.name in ("adhesion", "solver", "method"):
+        if isinstance(value, ComponentSpec) and attribute.name in specs:
             return
         base = _registry._base(kind)()
         if not isinstance(value, base):
-            raise ValidationError(f"Scene.{attribute.name}", value,
+            raise ValidationError(f"{owner}.{attribute.name}", value,
                                   f"an instance of {base.__module__}.{base.__qualname__}")
     return check
 

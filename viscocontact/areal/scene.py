@@ -50,14 +50,7 @@ SLIDING_KEYS = ("zeta", "direction")
 
 
 def _component_of(registry: str):
-    def check(inst, attribute, value):
-        from .. import _registry
-
-        base = _registry._base(registry)()
-        if not isinstance(value, base):
-            raise ValidationError(f"ArealScene.{attribute.name}", value,
-                                  f"an instance of {base.__module__}.{base.__qualname__}")
-    return check
+    return _scene._is_instance_of_base(registry, owner="ArealScene", specs=())
 
 
 def _default_kernel():
