@@ -23,10 +23,11 @@ SPECTRAL_LOW_ZETA = (
     "misfit on a standard linear solid at small ζ (friction against bulk dissipation: 4.3e-2 "
     "at ζ = 2.7e-6, 8.1e-3 at 9.3e-4, 1.2e-3 at 8.6e-5): the grid does not resolve the "
     "relaxation at the contact edges, and the estimate compares two grids that both miss it")
-FULL_CONTACT_BELOW_CLOSING = (
-    "the BEM ends in full contact under penetration control at Δ̃ = 0.446, although full "
-    "contact on an incompressible solid holds only at Δ̃ = 1, and says 'a larger one cannot be "
-    "imposed'")
+HALF_PERIOD_FIRST_CONTACT = (
+    "the first contact's motion (Prony solid at ζ = 8.3e-6, relaxation lengths far below δX = "
+    "1e-4) spreads it over half the period and comes to rest where the equilibrium solve stalls "
+    "at max|r| = 0.834; with the edge zones remade at every step of the motion the contact "
+    "travels round the period instead: the motion's end depends on the mesh zones here")
 MD_ZONES_AT_X0 = (
     "the Maugis-Dugdale zones' bounded-stress equations do not converge in 60 Newton "
     "iterations at the first edge set, so the residual at x0 is not finite and the solve "
@@ -37,7 +38,7 @@ SEEDS = [
     pytest.param(7, marks=pytest.mark.xfail(strict=True, reason=SPECTRAL_LOW_ZETA)),
     pytest.param(12, marks=pytest.mark.xfail(strict=True, reason=SPECTRAL_LOW_ZETA)),
     31,
-    pytest.param(56, marks=pytest.mark.xfail(strict=True, reason=FULL_CONTACT_BELOW_CLOSING)),
+    pytest.param(56, marks=pytest.mark.xfail(strict=True, reason=HALF_PERIOD_FIRST_CONTACT)),
     # no contact holds under the edges' motion below Δ̃ = 0.974 (SLS β = 376, confined layer,
     # γ̃ = 5.2e-7, ζ = 0.38), and the closed contact travels under the target load: "no steady
     # state at this control", a property of the scene under its history (the former search

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from viscocontact.adhesion import EnergyBalance
-from viscocontact.methods.bem.approach import Approach, ApproachOptions
+from viscocontact.methods.bem.approach import ApproachOptions
 from viscocontact.methods.bem.sets import Control
 from viscocontact.methods.bem.state import Outcome, State
 from viscocontact.problem import ContactProblem, Discretization
@@ -118,10 +118,12 @@ def _fold_ahead(v0, step, scale=1.0):
     state = State(outcome=Outcome.CONVERGED, edges=x0, system=branch)
     from viscocontact.methods.bem.path import Path
 
-    approach = Approach.__new__(Approach)
-    approach.eq = branch
-    approach.path = Path(branch, closed=None, path_step=0.05)
-    return approach.fold_ahead(state, tangent, x0 + scale * tangent * step,
+    from viscocontact.methods.bem.climb import Climb
+
+    climb = Climb.__new__(Climb)
+    climb.eq = branch
+    climb.path = Path(branch, closed=None, path_step=0.05)
+    return climb.fold_ahead(state, tangent, x0 + scale * tangent * step,
                                Control.penetration_of(v0 + step), v0)
 
 

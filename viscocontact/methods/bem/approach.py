@@ -14,7 +14,8 @@ or under load control to the target load. A continuation follows the branch:
   branch is unstable), a *birth* (the profile penetrates the solid outside the contacts), a
   *merge*, *detachment* or *split* of contacts, *closure* over the period, and the *target*.
   A step that meets one is shortened, towards the fold the branch's curvature predicts
-  (:meth:`fold_ahead`) or the birth the smallest gap's secant predicts (:meth:`birth_ahead`),
+  (:meth:`Climb.fold_ahead <.climb.Climb.fold_ahead>`) or the birth the smallest gap's secant
+  predicts (:meth:`Climb.birth_ahead <.climb.Climb.birth_ahead>`),
   else by halves, until the event lies within :attr:`resolution <ApproachOptions.resolution>`
   of the path step.
 * every **action** that leaves the branch (the first contact settling, a fold, a contact-set
@@ -35,7 +36,8 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
-from .path import STEP_REDUCTION, Path
+from .climb import Climb, moved
+from .path import Path
 from .relax import Relaxation
 from .sets import Control, first_touch
 from .state import Outcome, State
@@ -83,7 +85,9 @@ class Approach:
         self.path = path
         self.eq = path.eq
         self.options = options
-        self.relax = Relaxation(path.eq, path.closed, tolerance=options.relax_tolerance)
+        self.relax = Relaxation(path.eq, path.closed, tolerance=options.relax_tolerance,
+                                trial={"budget": path.budget, "probation": path.probation,
+                                       "pace": path.pace})
 
     def run(self, target: Control) -> State:
         if not target.is_load and target.value <= 0:
@@ -231,199 +235,14 @@ class Approach:
         return state
 
     def climb(self, state: State, target: Control) -> State:
-        """Follow the branch from ``state`` to ``target`` in steps of the controlled quantity.
-
-        After a step that meets an event, the event lies between the state and that step's
-        value (``bracket``): the following steps stay inside, aimed just short of the fold
-        that the failed step's start predicts (:meth:`fold_ahead`), else at the middle, until
-        the bracket is :attr:`ApproachOptions.smallest` wide; then the event acts from the
-        state at the bracket's end."""
-        eq, path, opt = self.eq, self.path, self.options
-        # an adhesionless contact's load rises with the penetration (no folds): its steps are
-        # in the penetration until the load passes the target, which is then solved between
-        by_depth = target.is_load and not eq.adhesive
-        kind, load = ("penetration", False) if by_depth else (target.kind, target.is_load)
-        end = np.inf if by_depth else target.value
-        below: State | None = None
-        above: State | None = None                    # the last step that passed the target
-        v = self.value(state, kind)
-        step = opt.path_step                          # in units of the penetration
-        # |d(control)/dΔ̃| of the first contact's branch, at least 1: the unit of the steps,
-        # fixed for the solve (the events are located to ApproachOptions.smallest of the control)
-        scale = max(1.0, self.scale(state, load, 1.0))
-        bracket: tuple | None = None   # (value past the event, kind, width, gap there)
-        aim: float | None = None                      # the fold predicted inside the bracket
-        while True:
-            if by_depth and state.fields.mean_pressure >= target.value:
-                return self.at_load(state, below, target)
-            if np.isfinite(end) and abs(end - v) <= 1e-14 * max(1.0, abs(end)):
-                return state
-            if bracket is not None and abs(bracket[0] - v) <= bracket[2] * (1 + 1e-9):
-                if by_depth and bracket[1] in ("fold", "target"):
-                    # the target load located; or a step that failed near it (an adhesionless
-                    # contact has no folds: that failure is the solver's): the target load is
-                    # solved from the states around it
-                    return self.at_load(state, above if bracket[1] == "target" else below,
-                                        target)
-                landing = self.act(bracket[1], state, Control(kind, bracket[0]), target)
-                if landing.outcome is not Outcome.CONVERGED or self.reached(landing, target):
-                    return landing
-                below, state, v = None, landing, bracket[0]
-                step, bracket, aim = opt.path_step, None, None
-                continue
-            v_next = self.next_value(v, step * scale, end, bracket, aim)
-            tangent = path.tangent(state, load)
-            start = path.predicted(state, v_next - v, load=load, tangent=tangent)
-            last = v_next == end
-            logged = len(eq.log.records)
-            trial = eq.solve(start, Control(kind, v_next), use_fallback=False,
-                             budget=path.budget, refine=last, polish=last,
-                             probation=path.probation, pace=path.pace,
-                             reduction=0.0 if last else STEP_REDUCTION,
-                             changes=not eq.adhesive)    # (an adhesionless root is unique)
-            event = self.event(state, start, trial)
-            if (event is None and by_depth and trial.fields.mean_pressure > target.value
-                    and abs(v_next - v) > opt.smallest):
-                # the step passed the target load: locate it like an event, so that the load is
-                # solved from a state close to it
-                event, above = "target", trial
-            if event is None:
-                step = path.next_step(abs(v_next - v) / scale, start, state.edges, trial.edges)
-                below, state, v = state, trial, v_next
-                if bracket is not None and bracket[1] == "birth":
-                    aim = self.birth_ahead(state, v, bracket)
-                continue
-            del eq.log.records[logged:]     # (a step past an event is not on the path)
-            if event == "fold" and not eq.adhesive and abs(v_next - v) > 2.0 * opt.smallest:
-                # an adhesionless branch has no folds: the solver failed on a long step (many
-                # births and merges at once), which a shorter one gets through
-                step = 0.5 * abs(v_next - v) / scale
-                continue
-            bracket, aim = (v_next, event, opt.smallest, trial.gap), None
-            if event == "fold" and eq.adhesive:
-                aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
-            elif event == "birth":
-                aim = self.birth_ahead(state, v, bracket)
+        """Follow the branch from ``state`` to ``target`` (:class:`~.climb.Climb`)."""
+        return Climb(self, state, target).run()
 
     @staticmethod
-    def scale(state: State, load: bool, previous: float) -> float:
-        """``|d(control)/dΔ̃|`` along the branch at ``state``: 1 in penetration control, the
-        branch's stiffness ``|dp̃∞/dΔ̃|`` in load control (from the state's derivatives), so that
-        a step of the load moves the contact about as far as the same step of the penetration
-        would (a glassy solid's loads are β times larger). ``previous`` where the derivatives
-        are missing or the branch is flat."""
-        if not load:
-            return 1.0
-        system = state.system
-        if system is None or np.size(state.edges) == 0:
-            return previous
-        d = system.derivatives(np.asarray(state.edges, dtype=float))
-        if d is None:
-            return previous
-        try:
-            t = -np.linalg.solve(d.jacobian, d.control)
-        except np.linalg.LinAlgError:
-            return previous
-        px, pd = d.pressure[:-1], d.pressure[-1]
-        if system.control.is_load:          # dx/dp̃∞: dΔ̃/dp̃∞ = (1 - ∂p/∂x·t)/(∂p/∂Δ̃)
-            k = pd / (1.0 - float(px @ t)) if 1.0 != float(px @ t) else np.inf
-        else:                                # dx/dΔ̃: dp̃∞/dΔ̃ = ∂p/∂x·t + ∂p/∂Δ̃
-            k = float(px @ t) + pd
-        k = abs(float(k))
-        return k if np.isfinite(k) and k > 1e-3 * previous else previous
-
-    def reached(self, state: State, target: Control) -> bool:
+    def reached(state: State, target: Control) -> bool:
         """Whether a converged state is at the target (a closure solved there)."""
-        value = self.value(state, target.kind)
+        value = Approach.value(state, target.kind)
         return abs(value - target.value) <= 1e-9 * max(1.0, abs(target.value))
-
-    def at_load(self, state: State, below: State | None, target: Control) -> State:
-        """The target load, passed by the last penetration step (from ``below`` to ``state``):
-        solved from the closer of the two."""
-        eq = self.eq
-        starts = [state] if below is None else sorted(
-            (state, below), key=lambda s: abs(float(s.fields.mean_pressure) - target.value))
-        out = State(outcome=Outcome.NOT_CONVERGED, edges=state.edges, message="")
-        for start in starts:
-            change = target.value - float(start.fields.mean_pressure)
-            for guess in (self.path.predicted(start, change, load=True), start.edges):
-                out = eq.solve(guess, target)
-                if out.outcome in (Outcome.CONVERGED, Outcome.FULL_CONTACT):
-                    return out
-        return out
-
-    def next_value(self, v: float, step: float, end: float, bracket: tuple | None,
-                   aim: float | None) -> float:
-        """The next step's value: a step towards ``end``; inside the bracket of an event, just
-        short of its predicted place ``aim``, then just past it (so that a good prediction
-        locates the event in two steps), else at the bracket's middle."""
-        if bracket is None:
-            return v + float(np.clip(end - v, -step, step))
-        past, width = bracket[0], bracket[2]
-        if aim is not None:
-            sign = np.sign(past - v)
-            for value in (aim - 0.5 * sign * width, aim + 0.5 * sign * width):
-                if min(sign * (value - v), sign * (past - value)) > 0.25 * width:
-                    return float(value)
-        return 0.5 * (v + past)
-
-    def birth_ahead(self, state: State, v: float, bracket: tuple) -> float | None:
-        """Where a contact is born inside ``bracket``: the secant root of the smallest gap
-        outside the contacts, from ``state`` (at ``v``, no penetration) to the bracket's end
-        (where the held contact set penetrates); None without both gaps."""
-        past, gap_past = bracket[0], bracket[3]
-        if state.fields is None or not gap_past < 0.0:
-            return None
-        _, gap = self.eq.checks.gap_outside(state.fields)
-        here = float(np.min(gap)) if gap.size else np.nan
-        if not here > 0.0:
-            return None
-        return v + (past - v) * here / (here - gap_past)
-
-    def event(self, state: State, start, trial: State) -> str | None:
-        """What ends the branch within a step to ``trial`` (None: the step is on the branch).
-
-        Besides a fold and closure, an adhesive contact's set changes along the branch (a
-        birth, a merge, a detachment, a split: the trial's :attr:`State.change`, which the
-        trial's solve did not make). The state it lands in depends on where the set changes (a
-        spot born later is born into a deformed neighbourhood): like a fold, the change is
-        located to the resolution and made there, so the state reached does not depend on the
-        step."""
-        if trial.outcome is Outcome.FULL_CONTACT:
-            return "closure"
-        if trial.change:
-            return trial.change
-        if trial.outcome is not Outcome.CONVERGED:
-            return "fold"
-        if (self.eq.adhesive and np.shape(trial.edges) == np.shape(state.edges)
-                and self._moved(start, trial.edges) > self.options.jumped):
-            return "fold"
-        return None
-
-    @staticmethod
-    def _moved(start, edges) -> float:
-        start, edges = np.asarray(start, dtype=float), np.asarray(edges, dtype=float)
-        if start.shape != edges.shape or not edges.size:
-            return 0.0
-        half = np.repeat(0.5 * (edges[1::2] - edges[0::2]), 2)
-        return float(np.max(np.abs(edges - start) / half))
-
-    def fold_ahead(self, state: State, tangent, start, control: Control,
-                   v: float) -> float | None:
-        """Where the branch through ``state`` (at ``v``) folds within the failed step to
-        ``control`` that started from ``start = x + h·t`` along the tangent ``t``, or None.
-
-        The tangent cancels the residual's linear part, so at the start the residual is
-        ``½h²·r''``, and the branch's curvature is ``x'' = -J⁻¹r''`` (one residual evaluation
-        and the state's Jacobian). On a parabola ``v* - v = a(x - x*)²`` an edge's
-        ``x'/(2x'')`` is its distance to the fold; the earliest fold within the step is taken.
-        None when the start was scaled down (:meth:`Path.predicted`), no edge folds within the
-        step, or the derivatives are missing."""
-        change = control.value - v
-        ahead = self.path.fold_within(state, tangent, start, control, change)
-        if ahead is None or not ahead[0] < abs(change):
-            return None
-        return v + float(np.sign(change)) * ahead[0]
 
     def act(self, event: str, state: State, past: Control, target: Control) -> State:
         """The event's action, located between ``state`` and the control value ``past``:
@@ -438,7 +257,7 @@ class Approach:
         if landing.outcome is Outcome.FULL_CONTACT:
             return self.closed(landing, state, target)
         if landing.converged and (np.shape(landing.edges) != np.shape(state.edges)
-                                  or self._moved(state.edges, landing.edges)
+                                  or moved(state.edges, landing.edges)
                                   > self.options.jumped):
             _record(log, "jump", area=float(np.sum(landing.fields.mesh.width)),
                     **{past.kind: past.value})

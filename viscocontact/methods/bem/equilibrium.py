@@ -1,29 +1,22 @@
 """The equilibrium at one control value, contact-set changes included (thesis §4.4).
 
-From a contact set the :class:`NonlinearSolver` moves the edges until every edge residual
-vanishes; when contacts merge or vanish the solve restarts in the new dimension; once converged,
-the gap is checked on the check grid: where the profile would penetrate the solid a contact is
-born, an adhesionless contact carrying tension is split, and a contact that grew past what its
-mesh resolves inside gets more elements; the solve restarts until nothing changes.
+:class:`Equilibrium` holds what the solves of one problem share: the edge systems and their
+shared evaluations, the residual's round-off floor, the births' regions and the growth of a
+contact just born. One solve, its solver calls and the contact-set changes that restart them,
+is a :class:`~.restarts.Restarts`.
 """
 from __future__ import annotations
 
 import attrs
 import numpy as np
 
-from ...adhesion.none import NoAdhesion
-from ...contact.mesh import element_counts, same_zones, zone_patterns
 from ...contact.topology import TopologyChange, repair
-from .checks import tensile_split
+from .restarts import REFINED_TENSION, Restarts
 from .sets import MIN_GAP, MIN_WIDTH, Control
-from .state import Outcome, State
+from .state import State
 from .system import EdgeSystem, Evaluations
 
-#: A merged adhesionless contact whose tension, at most this fraction of the largest pressure,
-#: and split alternate is refined (the sign of a nearly vanishing pressure is below the mesh's
-#: error: 1e-3 of the largest pressure measured at 64 elements across a narrow valley); a
-#: larger tension that alternates is reported as a cycle.
-REFINED_TENSION = 1e-2
+__all__ = ["Equilibrium", "REFINED_TENSION"]
 
 
 class Equilibrium:
@@ -144,208 +137,10 @@ class Equilibrium:
         smallest gap :attr:`State.gap`): the approach locates the change along its path and
         makes it there.
         """
-        log = self.log
-        tolerances = self.tolerances
-        fallback_tolerances = tolerances
-        if fallback_budget is not None:
-            fallback_tolerances = attrs.evolve(
-                tolerances, max_evaluations=min(fallback_budget, tolerances.max_evaluations))
-        if budget is not None:
-            tolerances = attrs.evolve(tolerances, max_evaluations=min(budget,
-                                                                      tolerances.max_evaluations))
-            if fallback_budget is None:
-                fallback_tolerances = tolerances
-        if probation:
-            tolerances = attrs.evolve(tolerances, probation=probation)
-        edges = np.asarray(edges, dtype=float)
-        fallback_first = False
-        converged_before_births: list[np.ndarray] = []
-        polished = not polish
-        rezoned = False         # zones remade to judge a cohesive contact's tension
-        just_born = False       # contacts were just born and pulled open by adhesion
-        splits: list[np.ndarray] = []
-        called = False          # a solver call was made (the pace is for the first one)
-        for _ in range(self.max_restarts):
-            if edges.size == 0:
-                born = self.checks.births_without_contact(control)
-                if born is None:
-                    return State.no_contact()
-                edges = born
-                continue
-            system = self.system(control, edges)
-            try:
-                tolerances = self.noise_floor(system, edges, tolerances)
-                call = self.reduced(system, edges, tolerances, reduction)
-                if pace and not called:
-                    call = attrs.evolve(call, pace=pace)
-                called = True
-                fallback_tolerances = attrs.evolve(fallback_tolerances, residual=call.residual)
-                if fallback_first and self.fallback is not None:
-                    fallback_first = False
-                    res = self.fallback.solve(system, edges, fallback_tolerances)
-                else:
-                    res = self.solver.solve(system, edges, call)
-                if not res.converged and self.fallback is not None and (use_fallback or just_born):
-                    log.iterations += res.iterations
-                    log.event(f"{type(self.solver).__name__} stopped ({res.status.value}); "
-                              f"{type(self.fallback).__name__} takes over")
-                    start = res.x if np.all(np.isfinite(res.x)) else edges
-                    res = self.fallback.solve(system, start, fallback_tolerances)
-            except TopologyChange as change:
-                log.evaluations += system.evaluations
-                if not changes and not change.full_contact:
-                    return State(outcome=Outcome.NOT_CONVERGED, edges=edges,
-                                 message=change.reason, change=(
-                                     "merge" if "merge" in change.reason else "detachment"))
-                log.event(change.reason)
-                for kind in ("merge", "detach"):
-                    if kind in change.reason:
-                        log.records.append({"kind": "merge" if kind == "merge"
-                                            else "detachment", "control": control.value})
-                if change.full_contact:
-                    # accept closure only if a small-step march closes the contact too (a Newton
-                    # trial step may overshoot across the period)
-                    start = system.last_valid
-                    if start is None or self.fallback is None or self.closes(start, control):
-                        return State.full_contact()
-                    log.event("closure rejected: a step overshot the period")
-                    edges = start
-                    fallback_first = True
-                    continue
-                edges = change.edges
-                continue
-            log.count(system, res)
-            if not res.converged:
-                fields, ctx, r = system.evaluate(res.x)
-                why = ("" if system.limitation is None
-                       else f" (the adhesion model rejected a trial point: {system.limitation})")
-                return State(outcome=Outcome.NOT_CONVERGED, edges=res.x, fields=fields, ctx=ctx,
-                             residual=float(np.max(np.abs(r))),
-                             message=f"edge solve did not converge: {res.status.value}: "
-                                     f"{res.message}{why}")
-            x = res.x
-            fields, ctx, r = system.evaluate(x)
-            size = float(np.max(np.abs(r)))
-
-            def not_converged(message, x=x, fields=fields, ctx=ctx, size=size):
-                return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
-                             residual=size, message=message)
-
-            xs, gap = self.checks.gap_outside(fields)          # once, for both checks
-            # births first (:meth:`born`)
-            regions, snapped = self.born(fields, (xs, gap))
-            violation = None if regions else self.adhesion.gap_violation(xs, gap, fields)
-            if violation is not None:
-                return not_converged(violation)
-            if regions and any(len(x) == len(y) and np.allclose(x, y, rtol=0, atol=1e-7)
-                               for y in converged_before_births):
-                # the same equilibrium again: the contacts born from it last time vanished
-                # (detached or turned inside out) and would be born again, endlessly
-                where = ("below the cohesive range" if snapped else "negative")
-                return not_converged(
-                    f"contact set cycles: contacts born where the gap is {where} on the check "
-                    f"grid ({len(regions)} region(s)) detach again; a finer check grid "
-                    "(Discretization.check_points) or mesh may settle it")
-            if regions and not changes:
-                return State(outcome=Outcome.CONVERGED, edges=x, fields=fields, ctx=ctx,
-                             residual=size, message="a contact is born", system=system,
-                             change="birth", gap=float(np.min(gap)))
-            if regions:
-                converged_before_births.append(x.copy())
-                new = [v for (a, b, _) in regions for v in (a, b)]
-                merged, _, _, full = repair(np.concatenate([x, new]), MIN_WIDTH, MIN_GAP)
-                log.event(f"{len(regions)} contact(s) born" + (
-                    " where the gap fell below the cohesive range" if snapped else ""))
-                log.records.append({"kind": "birth", "control": control.value,
-                                    "contacts": float(len(regions))})
-                if full:
-                    return State.full_contact()
-                if self.adhesive:
-                    # an adhesive contact is born far from its equilibrium, often next to a
-                    # neighbour it then merges with across a closing neck, which is where
-                    # Newton-type steps stall and the fallback march gets through
-                    merged = self.grow(merged, control, [(a, b) for (a, b, _) in regions])
-                    if merged is None:
-                        return State.full_contact()
-                    just_born = True
-                edges = merged
-                continue
-            # a contact opens where its tension exceeds what the interface holds: nowhere for
-            # adhesion of vanishing range (no flaw to open from), beyond σ̃0 for a cohesive law
-            strength = (0.0 if isinstance(self.adhesion, NoAdhesion)
-                        else self.adhesion.closed_strength(self.prep.shape.amplitude))
-            split, where, tension = ((None, [], 0.0) if not np.isfinite(strength)
-                                     else tensile_split(fields, strength=strength))
-            if (split is not None and strength > 0.0 and not rezoned
-                    and not same_zones(system.zones, zone_patterns(x, self.spec, system.counts))):
-                # the edge zones were made for the contacts where this solve began: a contact
-                # that grew far has its zone's last element many times smaller than the
-                # clustered one beside it, and the stress spikes there (2.4 % above σ̃0 on a
-                # sinusoid at ζ = 0.3, λ = 5), so the cohesive law's tension is judged again on
-                # zones made for these contacts before the contact is split
-                rezoned = True
-                edges = x
-                continue
-            if split is not None and sum(len(split) == len(y)
-                                         and np.allclose(split, y, rtol=0, atol=1e-3)
-                                         for y in splits) >= 2:
-                # split -> the parts merge -> the same tension, twice. A small tension means
-                # the pressure nearly vanishes inside the contact, with a sign below what this
-                # mesh resolves: refine that contact
-                counts = element_counts(self.spec, system.counts, len(x) // 2)
-                if tension > REFINED_TENSION or not refine:
-                    return not_converged(
-                        "contact set cycles: a merged contact carries tension "
-                        f"({tension:.2g} of the largest pressure), and the parts it is split "
-                        "into merge again")
-                if not self.policy.refine_at([c for _, c in where], [counts[j] for j, _ in where]):
-                    return not_converged(
-                        "contact set cycles: a merged contact carries tension, and the parts "
-                        f"it is split into merge again, with {self.policy.cap} elements in the "
-                        "contact")
-                log.event(
-                    "mesh refined in a contact whose tension and split alternate (up to "
-                    f"{max(m for _, m in self.policy.refined)} elements): its tension, "
-                    f"{tension:.2g} of the largest pressure, is a nearly vanishing "
-                    "pressure whose sign the mesh does not resolve")
-                splits.clear()
-                edges = x
-                continue
-            if split is not None and not changes:
-                return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
-                             residual=size, message="a contact splits", change="split")
-            if split is not None:
-                splits.append(split)
-                if any(len(split) == len(y) and np.allclose(split, y, rtol=0, atol=1e-3)
-                       for y in splits[:-1]):
-                    # the parts of the last split merged again: their solve went to the
-                    # degenerate root where the gap closes (the stress intensity of both inner
-                    # edges vanishes as the gap does); start the parts further apart
-                    split = tensile_split(fields, widen=True, strength=strength)[0]
-                    log.event("split again with the gap widened")
-                log.event("adhesionless contact split where it carried tension "
-                          f"(up to {tension:.2g} of the largest pressure)" if strength == 0.0
-                          else "contact split where its tension exceeded the cohesive stress "
-                               f"(by up to {tension:.2g} of the largest stress)")
-                edges = split
-                continue
-            finer = self.policy.counts_for(x)
-            if finer is not None and (system.counts is None
-                                      or any(a > b for a, b in zip(finer, system.counts))):
-                # contacts grew past what their meshes in this solve resolve inside them
-                log.event(f"mesh refined inside contacts (up to {max(finer)} elements) "
-                          "to resolve the profile between collocation points")
-                edges = x
-                continue
-            if not polished and not same_zones(system.zones,
-                                               zone_patterns(x, self.spec, system.counts)):
-                polished = True
-                edges = x
-                continue
-            return State(outcome=Outcome.CONVERGED, edges=x, fields=fields, ctx=ctx,
-                         residual=size, message="converged", system=system)
-        return State(outcome=Outcome.NOT_CONVERGED, edges=edges, residual=np.inf,
-                     message=f"contact set still changing after {self.max_restarts} restarts")
+        return Restarts(self, control, use_fallback=use_fallback, budget=budget,
+                        refine=refine, polish=polish, fallback_budget=fallback_budget,
+                        probation=probation, pace=pace, reduction=reduction,
+                        changes=changes).run(edges)
 
     def born(self, fields, outside=None) -> tuple[list, bool]:
         """The regions ``(a, b, depth)`` where contacts are born from the state of ``fields``,

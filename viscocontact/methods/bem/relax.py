@@ -14,11 +14,15 @@ positive residual recedes. The flow is integrated by linearly implicit Euler ste
 :data:`JACOBIAN_AGE` steps), with the step ``h`` chosen so that each step's local error,
 ``h²/2·Ẍ`` estimated as ``h/2`` times the change of the edges' speed over the step (one
 residual a step), is within ``tolerance`` of its contact's half-width (or of the mean
-half-width, when that is larger); contacts that meet merge, contacts that vanish detach,
-contacts that close over the period close. As the edges slow down the steps grow and become
-Newton's; once every mode of the motion decays and Newton's step to the root is within the
-tolerance (or ``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance), the
-equilibrium solve finishes from there with the contact set held. Where the profile penetrates
+half-width, when that is larger; a step after a rejected one does not grow); contacts that
+meet merge, contacts that vanish detach, contacts that close over the period close. As the
+edges slow down the steps grow and become Newton's; once every mode of the motion decays and
+Newton's iteration from the state contracts (its second step at most
+:data:`NEWTON_CONTRACTION` of its first, which is within :data:`NEWTON_REACH` half-widths: the
+state lies where the linearised motion holds, and the flow ends at Newton's root), or
+``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance, the equilibrium solve
+finishes from there with the contact set held, on the trial budgets of an approach step (at a
+fold, where the root is gone, it fails fast and the motion goes on). Where the profile penetrates
 at its root, contacts are born there, at zero size, and the motion goes on with them (a born
 contact grows as every edge moves), so that merges, detachments and births all happen on the
 way, as the motion makes them.
@@ -45,6 +49,12 @@ UNSTABLE_STEP = 0.5
 #: The motion's mesh zones are remade for its edges at most this many times in one motion, when
 #: the motion nears its end (the equilibrium solve would remake them).
 REZONED = 4
+#: Newton's step from a state of the motion is tested for the root the motion heads for when
+#: it moves no edge more than this many half-widths of its contact.
+NEWTON_REACH = 0.25
+#: ... and that root is taken when the simplified Newton step after it is at most this
+#: fraction of it (the contraction of Newton's iteration there; at a fold it tends to 1).
+NEWTON_CONTRACTION = 0.25
 #: Accepted steps taken with one Jacobian (linearly implicit Euler stays consistent with an
 #: older one; a rejected step or a new contact set takes a fresh one).
 JACOBIAN_AGE = 8
@@ -58,6 +68,26 @@ class RelaxFrom:
 
     edges: np.ndarray = attrs.field(converter=lambda v: np.asarray(v, dtype=float).ravel())
     tolerance: float = 0.02
+
+
+@attrs.define
+class _Motion:
+    """The integrator's state of one motion of a contact set."""
+
+    system: object
+    x: np.ndarray
+    r: np.ndarray | None = None
+    h: float | None = None              # the next step
+    J: np.ndarray | None = None         # the steps' Jacobian, kept while they are accepted
+    age: int = 0                        # accepted steps taken with it
+    rezoned: int = 0
+    moved: int = 0                      # accepted steps
+    rejected: bool = False              # the last step was rejected
+    early: bool = True                  # no equilibrium solve tried yet: zones are remade
+    #                                     (the motion's first steps move edges the most)
+    tested: float = np.inf              # Newton's contraction is tested again below this max|r|
+    track: list = attrs.Factory(list)   # (total width, mean edge position, edges) since the
+    #                                     last change of the contact set
 
 
 def _scale(x: np.ndarray) -> np.ndarray:
@@ -78,13 +108,20 @@ class Relaxation:
         Accepted and rejected steps allowed before the motion is given up (a failed state). A
         contact that travels is found once it has gone round the period, which can take more
         than a thousand steps (campaign seeds 196 and 213: 400 steps ended them unexplained).
+    trial : dict
+        Solver budgets (``budget``, ``probation``, ``pace`` of :meth:`Equilibrium.solve`) of
+        the equilibrium solve that the motion tries where Newton's step to a stable root is
+        short: a state at a fold, whose root is gone, passes that test too, and its solve
+        must fail as fast as an approach step near a fold does (:attr:`Path.budget`).
     """
 
-    def __init__(self, equilibrium, closed, tolerance: float = 0.02, max_steps: int = 2000):
+    def __init__(self, equilibrium, closed, tolerance: float = 0.02, max_steps: int = 2000,
+                 trial: dict | None = None):
         self.eq = equilibrium
         self.closed = closed
         self.tolerance = tolerance
         self.max_steps = max_steps
+        self.trial = dict(trial or {})
         self._finish: dict = {}
 
     def run(self, edges, control: Control, final: bool = True) -> State:
@@ -109,13 +146,15 @@ class Relaxation:
         return State(outcome=Outcome.NOT_CONVERGED, edges=x, message=f"the edges' overdamped "
                      f"motion {why}")
 
-    def _settle(self, x: np.ndarray, control: Control) -> State | np.ndarray | None:
+    def _settle(self, x: np.ndarray, control: Control,
+                trial: bool = False) -> State | np.ndarray | None:
         """The equilibrium solve from ``x`` with its contact set held: the state; or, where
         the profile penetrates at that state's root, the edges with the contacts born there
         added (they grow by the motion, like every edge); or None when the solve met a merge
-        or a split (the motion makes those)."""
+        or a split (the motion makes those). ``trial``: with the :attr:`trial` budgets."""
         eq = self.eq
-        out = eq.solve(x, control, use_fallback=False, changes=False, **self._finish)
+        out = eq.solve(x, control, use_fallback=False, changes=False, **self._finish,
+                       **(self.trial if trial else {}))
         if out.change == "birth":
             regions, snapped = eq.born(out.fields)
             new = [v for (a, b, _) in regions for v in (a, b)]
@@ -128,107 +167,135 @@ class Relaxation:
         return None if out.change else out
 
     def _run(self, x: np.ndarray, control: Control, systems: list) -> State | np.ndarray:
-        system = self.eq.system(control, x)
-        systems.append(system)
+        """One motion of the contact set ``x``: steps until the edges come to rest (the
+        state there, or the edges with contacts born there), or until the motion ends
+        otherwise (closure, detachment, a failure)."""
+        m = _Motion(system=self.eq.system(control, x), x=x)
+        systems.append(m.system)
         settled = SETTLED * self.eq.tolerances.residual
-        h = None
-        shortcut = True         # finish with the equilibrium solve once Newton's step is short
-        track: list = []        # (total width, mean edge position, edges) since the last
-        #                         change of the contact set
-        J = None                # the Jacobian of the steps: kept while they are accepted
-        rezoned = 0
-        age = 0
-        moved = 0
-        r = self._residual(system, x)
+        m.r = self._residual(m.system, x)
         for _ in range(self.max_steps):
-            if r is None:
-                return self._failed(x, "met a contact set without a valid field")
-            near = np.max(np.abs(r)) <= settled
-            if (near or shortcut) and rezoned < REZONED:
-                fresh = self._fresh(system, x, control)
-                if fresh is not None:
-                    # the edges have moved out of the mesh zones they were solved with, which
-                    # the equilibrium solve would remake: the motion goes on, on the new ones
-                    system, J, rezoned = fresh, None, rezoned + 1
-                    systems.append(system)
-                    r = self._residual(system, x)
-                    continue
+            if m.r is None:
+                return self._failed(m.x, "met a contact set without a valid field")
+            near = np.max(np.abs(m.r)) <= settled
+            if (near or m.early) and m.rezoned < REZONED and self._rezone(m, control, systems):
+                continue
             if near:
-                break
-            if J is None or age >= JACOBIAN_AGE:
-                J, age = self._jacobian(system, x), 0
-                if J is None:
-                    return self._failed(x, "met a contact set without derivatives")
-            if shortcut and self._near_stable_root(r, J, x):
-                # Newton's step lands on the root the motion is heading for, unless the state
-                # sits at a fold past which the root is gone: then the motion goes on
-                out = self._settle(x, control)
-                if out is not None and not (isinstance(out, State)
-                                            and out.outcome is Outcome.NOT_CONVERGED):
-                    self.eq.log.event(f"the edges moved in {moved} steps of their overdamped "
-                                      "motion")
-                    return out
-                shortcut = False
-            if h is None:       # the first step moves the fastest edge a twentieth of a scale
-                h = 0.05 * float(np.min(_scale(x) / np.maximum(np.abs(r), 1e-300)))
-            # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign
-            # past 2/h): the step resolves the growth of every unstable mode of the motion
-            h = min(h, UNSTABLE_STEP / self._growth(J))
-            move = self._step(r, J, h)
-            if move is None:
-                h, J = 0.25 * h, None
-                continue
-            landed, changed, reason, full = repair(x + move, MIN_WIDTH, MIN_GAP)
-            if full:
-                if control.is_load and not self.closed.supports(control.value):
-                    return self._failed(landed, "closed the contact, which does not carry "
-                                                "this load")
-                self.eq.log.event("the edges' motion closed the contact")
-                return State.full_contact()
-            if not landed.size:
-                self.eq.log.event("the edges' motion detached every contact")
-                if control.is_load and control.value > 0:
-                    # a compressive load needs a contact: found afresh from the first touch
-                    return self.eq.solve(landed, control, use_fallback=False, **self._finish)
-                return State.no_contact()
-            after = self.eq.system(control, landed) if changed else system
-            r_new = self._residual(after, landed)
-            if r_new is None:
-                # no field at the step's end (a Maugis-Dugdale zone's equations): a shorter step
-                h, J = 0.25 * h, None
-                continue
-            # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
-            # the speed -O r over the step (one residual a step: the one the next step needs);
-            # a step that changes the contact set is taken as it is (the set's change is the
-            # motion's event)
-            error = (0.0 if changed else
-                     float(np.max(0.5 * h * np.abs(r_new - r) / _scale(x))))
-            if error > self.tolerance:
-                h, J = h * max(0.2, 0.9 * np.sqrt(self.tolerance / error)), None
-                continue
-            h *= min(4.0, 0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
-            moved, age, x, r = moved + 1, age + 1, landed, r_new
-            for kind, word in (("merge", "merge"), ("detachment", "detach")):
-                if changed and word in reason:
-                    self.eq.log.records.append({"kind": kind, "control": control.value})
-            track.append((float(np.sum(x[1::2] - x[0::2])), float(np.mean(x)), len(x)))
-            if changed:
-                track = track[-1:]
-                system, J = after, None
-                systems.append(system)
-            if self._travels(track):
-                return self._failed(x, "carries the contacts round the period: no steady "
-                                       "state at this control")
-        else:
-            return self._failed(x, f"did not stop within {self.max_steps} steps")
-        self.eq.log.event(f"the edges moved in {moved} steps of their overdamped motion")
-        out = self._settle(x, control)
+                return self._at_rest(m, control)
+            if m.J is None or m.age >= JACOBIAN_AGE:
+                m.J, m.age = self._jacobian(m.system, m.x), 0
+                if m.J is None:
+                    return self._failed(m.x, "met a contact set without derivatives")
+            out = self._shortcut(m, control)
+            if out is None:
+                out = self._advance(m, control, systems)
+            if out is not None:
+                return out
+        return self._failed(m.x, f"did not stop within {self.max_steps} steps")
+
+    def _rezone(self, m: "_Motion", control: Control, systems: list) -> bool:
+        """Whether the edges, at rest, have moved out of the mesh zones they were solved with
+        (which the equilibrium solve would remake): then the motion goes on, on new ones."""
+        fresh = self._fresh(m.system, m.x, control)
+        if fresh is None:
+            return False
+        m.system, m.J, m.rezoned = fresh, None, m.rezoned + 1
+        systems.append(fresh)
+        m.r = self._residual(fresh, m.x)
+        return True
+
+    def _at_rest(self, m: "_Motion", control: Control) -> State | np.ndarray:
+        """The equilibrium where the edges came to rest."""
+        self.eq.log.event(f"the edges moved in {m.moved} steps of their overdamped motion")
+        out = self._settle(m.x, control)
         if out is None:
             # at rest, the held solve meets a merge or a split (a tensile contact, which no edge
             # motion opens): the equilibrium solve makes it
             self.eq.log.event("the edges came to rest next to a change of the contact set")
-            return self.eq.solve(x, control, use_fallback=False, **self._finish)
+            return self.eq.solve(m.x, control, use_fallback=False, **self._finish)
         return out
+
+    def _shortcut(self, m: "_Motion", control: Control) -> State | np.ndarray | None:
+        """The equilibrium the motion heads for, when Newton's iteration from here reaches it
+        (:meth:`_newton_start`; tested again once ``max|r|`` has halved); else None."""
+        size = float(np.max(np.abs(m.r)))
+        if size > m.tested:
+            return None
+        m.tested = 0.5 * size
+        start = self._newton_start(m.system, m.r, m.J, m.x)
+        if start is None:
+            return None
+        out = self._settle(start, control, trial=True)
+        if out is None or (isinstance(out, State) and out.outcome is Outcome.NOT_CONVERGED):
+            m.early = False
+            return None
+        self.eq.log.event(f"the edges moved in {m.moved} steps of their overdamped motion")
+        return out
+
+    def _advance(self, m: "_Motion", control: Control, systems: list) -> State | None:
+        """One step of the motion, accepted or rejected by its local error; a state when the
+        step ends the motion (closure, every contact detached, a contact that travels)."""
+        if m.h is None:         # the first step moves the fastest edge a twentieth of a scale
+            m.h = 0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(m.r), 1e-300)))
+        # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign
+        # past 2/h): the step resolves the growth of every unstable mode of the motion
+        m.h = min(m.h, UNSTABLE_STEP / self._growth(m.J))
+        move = self._step(m.r, m.J, m.h)
+        if move is None:
+            m.h, m.J = 0.25 * m.h, None
+            return None
+        landed, changed, reason, full = repair(m.x + move, MIN_WIDTH, MIN_GAP)
+        if full or not landed.size:
+            return self._ended(landed, full, control)
+        after = self.eq.system(control, landed) if changed else m.system
+        r = self._residual(after, landed)
+        if r is None:
+            # no field at the step's end (a Maugis-Dugdale zone's equations): a shorter step
+            m.h, m.J = 0.25 * m.h, None
+            return None
+        # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
+        # the speed -O r over the step (one residual a step: the one the next step needs);
+        # a step that changes the contact set is taken as it is (the set's change is the
+        # motion's event)
+        error = 0.0 if changed else float(np.max(0.5 * m.h * np.abs(r - m.r) / _scale(m.x)))
+        if error > self.tolerance:
+            m.h, m.J = m.h * max(0.2, 0.9 * np.sqrt(self.tolerance / error)), None
+            m.rejected = True
+            return None
+        # the step after a rejected one does not grow (Hairer, Nørsett & Wanner I, II.4):
+        # while the edges accelerate, a grown step is rejected again
+        m.h *= min(1.0 if m.rejected else 4.0,
+                   0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
+        m.rejected = False
+        m.moved, m.age, m.x, m.r = m.moved + 1, m.age + 1, landed, r
+        for kind, word in (("merge", "merge"), ("detachment", "detach")):
+            if changed and word in reason:
+                self.eq.log.records.append({"kind": kind, "control": control.value})
+        m.track.append((float(np.sum(landed[1::2] - landed[0::2])), float(np.mean(landed)),
+                        len(landed)))
+        if changed:
+            m.track = m.track[-1:]
+            m.system, m.J = after, None
+            systems.append(after)
+        if self._travels(m.track):
+            return self._failed(m.x, "carries the contacts round the period: no steady "
+                                     "state at this control")
+        return None
+
+    def _ended(self, landed: np.ndarray, full: bool, control: Control) -> State:
+        """A step that closed the contact over the period (``full``) or detached every
+        contact."""
+        if full:
+            if control.is_load and not self.closed.supports(control.value):
+                return self._failed(landed, "closed the contact, which does not carry "
+                                            "this load")
+            self.eq.log.event("the edges' motion closed the contact")
+            return State.full_contact()
+        self.eq.log.event("the edges' motion detached every contact")
+        if control.is_load and control.value > 0:
+            # a compressive load needs a contact: found afresh from the first touch
+            return self.eq.solve(landed, control, use_fallback=False, **self._finish)
+        return State.no_contact()
 
     def _fresh(self, system, x: np.ndarray, control: Control):
         """A new edge system for ``x`` when the mesh zones or element counts of ``system``
@@ -264,16 +331,37 @@ class Relaxation:
             return None
         return J if J is not None and np.all(np.isfinite(J)) else None
 
-    def _near_stable_root(self, r, J, x) -> bool:
-        """Whether every mode of the motion decays and Newton's step to the root is within the
-        tolerance: the motion ends at that root, which the equilibrium solve finishes."""
+    def _newton_start(self, system, r, J, x) -> np.ndarray | None:
+        """Newton's step from ``x`` when the motion ends at the root it heads for: every mode
+        of the motion decays, the step is within :data:`NEWTON_REACH` half-widths and keeps
+        the contact set, and a second (simplified) step from there is at most
+        :data:`NEWTON_CONTRACTION` times the first, so that the state lies where the
+        linearisation holds and the flow, like Newton's iteration, converges to that root; a
+        state at a fold, whose root is gone, fails the contraction. One residual evaluation;
+        None when the test fails."""
         if self._growth(J) > 1e-300:
-            return False
+            return None
         try:
-            newton = np.linalg.solve(J, -r)
+            first = np.linalg.solve(J, -r)
         except np.linalg.LinAlgError:
-            return False
-        return bool(np.max(np.abs(newton) / _scale(x)) <= self.tolerance)
+            return None
+        scale = _scale(x)
+        step = float(np.max(np.abs(first) / scale))
+        if not step <= NEWTON_REACH:
+            return None
+        landed, changed, _, full = repair(x + first, MIN_WIDTH, MIN_GAP)
+        if changed or full:
+            return None
+        r1 = self._residual(system, landed)
+        if r1 is None:
+            return None
+        try:
+            second = np.linalg.solve(J, -r1)
+        except np.linalg.LinAlgError:
+            return None
+        if float(np.max(np.abs(second) / scale)) > NEWTON_CONTRACTION * step:
+            return None
+        return landed
 
     @staticmethod
     def _growth(J) -> float:

@@ -1,0 +1,292 @@
+"""One equilibrium solve: solver calls, and the contact-set changes that restart them.
+
+From a contact set the :class:`NonlinearSolver` moves the edges until every edge residual
+vanishes (:meth:`Restarts.call`); when contacts merge or vanish on the way the solve restarts
+in the new dimension (:meth:`Restarts.changed`); once converged, the gap is checked on the check
+grid (:meth:`Restarts.checked`): where the profile would penetrate the solid a contact is born
+(:meth:`Restarts.births`), a contact carrying more tension than the interface holds is split
+(:meth:`Restarts.split`), and a contact that grew past what its mesh resolves inside gets more
+elements; the solve restarts until nothing changes (thesis §4.4).
+"""
+from __future__ import annotations
+
+import attrs
+import numpy as np
+
+from ...adhesion.none import NoAdhesion
+from ...contact.mesh import element_counts, same_zones, zone_patterns
+from ...contact.topology import TopologyChange, repair
+from .checks import tensile_split
+from .sets import MIN_GAP, MIN_WIDTH, Control
+from .state import Outcome, State
+
+#: A merged adhesionless contact whose tension, at most this fraction of the largest pressure,
+#: and split alternate is refined (the sign of a nearly vanishing pressure is below the mesh's
+#: error: 1e-3 of the largest pressure measured at 64 elements across a narrow valley); a
+#: larger tension that alternates is reported as a cycle.
+REFINED_TENSION = 1e-2
+
+
+class Restarts:
+    """One solve of :meth:`Equilibrium.solve <.equilibrium.Equilibrium.solve>` at ``control``
+    (its parameters are that method's): :meth:`run` returns the state."""
+
+    def __init__(self, eq, control: Control, *, use_fallback: bool, budget: int | None,
+                 refine: bool, polish: bool, fallback_budget: int | None, probation: int,
+                 pace: tuple[float, ...], reduction: float, changes: bool):
+        self.eq = eq
+        self.control = control
+        self.use_fallback = use_fallback
+        self.refine = refine
+        self.pace = pace
+        self.reduction = reduction
+        self.changes = changes
+        tolerances = eq.tolerances
+        fallback_tolerances = tolerances
+        if fallback_budget is not None:
+            fallback_tolerances = attrs.evolve(
+                tolerances, max_evaluations=min(fallback_budget, tolerances.max_evaluations))
+        if budget is not None:
+            tolerances = attrs.evolve(tolerances, max_evaluations=min(budget,
+                                                                      tolerances.max_evaluations))
+            if fallback_budget is None:
+                fallback_tolerances = tolerances
+        if probation:
+            tolerances = attrs.evolve(tolerances, probation=probation)
+        self.tolerances = tolerances
+        self.fallback_tolerances = fallback_tolerances
+        self.fallback_first = False
+        self.converged_before_births: list[np.ndarray] = []
+        self.polished = not polish
+        self.rezoned = False        # zones remade to judge a cohesive contact's tension
+        self.just_born = False      # contacts were just born and pulled open by adhesion
+        self.splits: list[np.ndarray] = []
+        self.called = False         # a solver call was made (the pace is for the first one)
+
+    def run(self, edges) -> State:
+        eq, control = self.eq, self.control
+        edges = np.asarray(edges, dtype=float)
+        for _ in range(eq.max_restarts):
+            if edges.size == 0:
+                born = eq.checks.births_without_contact(control)
+                if born is None:
+                    return State.no_contact()
+                edges = born
+                continue
+            system = eq.system(control, edges)
+            try:
+                res = self.call(system, edges)
+            except TopologyChange as change:
+                out = self.changed(change, system, edges)
+            else:
+                eq.log.count(system, res)
+                out = self.stopped(system, res) if not res.converged else self.checked(
+                    system, res.x)
+            if isinstance(out, State):
+                return out
+            edges = out
+        return State(outcome=Outcome.NOT_CONVERGED, edges=edges, residual=np.inf,
+                     message=f"contact set still changing after {eq.max_restarts} restarts")
+
+    def call(self, system, edges):
+        """The solver's result from ``edges`` (the primary solver, then the fallback from where
+        it stopped when that is allowed)."""
+        eq = self.eq
+        self.tolerances = eq.noise_floor(system, edges, self.tolerances)
+        call = eq.reduced(system, edges, self.tolerances, self.reduction)
+        if self.pace and not self.called:
+            call = attrs.evolve(call, pace=self.pace)
+        self.called = True
+        self.fallback_tolerances = attrs.evolve(self.fallback_tolerances,
+                                                residual=call.residual)
+        if self.fallback_first and eq.fallback is not None:
+            self.fallback_first = False
+            return eq.fallback.solve(system, edges, self.fallback_tolerances)
+        res = eq.solver.solve(system, edges, call)
+        if not res.converged and eq.fallback is not None and (self.use_fallback
+                                                               or self.just_born):
+            eq.log.iterations += res.iterations
+            eq.log.event(f"{type(eq.solver).__name__} stopped ({res.status.value}); "
+                         f"{type(eq.fallback).__name__} takes over")
+            start = res.x if np.all(np.isfinite(res.x)) else edges
+            res = eq.fallback.solve(system, start, self.fallback_tolerances)
+        return res
+
+    def changed(self, change: TopologyChange, system, edges) -> State | np.ndarray:
+        """After a solver call from ``edges`` that merged, detached or closed contacts: the
+        state, or the edges to restart from."""
+        eq, log = self.eq, self.eq.log
+        log.evaluations += system.evaluations
+        if not self.changes and not change.full_contact:
+            return State(outcome=Outcome.NOT_CONVERGED, edges=edges,
+                         message=change.reason, change=(
+                             "merge" if "merge" in change.reason else "detachment"))
+        log.event(change.reason)
+        for kind in ("merge", "detach"):
+            if kind in change.reason:
+                log.records.append({"kind": "merge" if kind == "merge"
+                                    else "detachment", "control": self.control.value})
+        if change.full_contact:
+            # accept closure only if a small-step march closes the contact too (a Newton
+            # trial step may overshoot across the period)
+            start = system.last_valid
+            if start is None or eq.fallback is None or eq.closes(start, self.control):
+                return State.full_contact()
+            log.event("closure rejected: a step overshot the period")
+            self.fallback_first = True
+            return start
+        return change.edges
+
+    @staticmethod
+    def stopped(system, res) -> State:
+        """The state where the solver stopped without converging."""
+        fields, ctx, r = system.evaluate(res.x)
+        why = ("" if system.limitation is None
+               else f" (the adhesion model rejected a trial point: {system.limitation})")
+        return State(outcome=Outcome.NOT_CONVERGED, edges=res.x, fields=fields, ctx=ctx,
+                     residual=float(np.max(np.abs(r))),
+                     message=f"edge solve did not converge: {res.status.value}: "
+                             f"{res.message}{why}")
+
+    def checked(self, system, x) -> State | np.ndarray:
+        """The converged edges ``x`` checked: births, splits, meshes inside the contacts, and
+        the zones of its own edges (``polish``); the state, or the edges to restart from."""
+        eq = self.eq
+        fields, ctx, r = system.evaluate(x)
+        size = float(np.max(np.abs(r)))
+        xs, gap = eq.checks.gap_outside(fields)          # once, for both checks
+        out = self.births(system, x, fields, ctx, size, (xs, gap))
+        if out is not None:
+            return out
+        out = self.split(system, x, fields, ctx, size)
+        if out is not None:
+            return out
+        finer = eq.policy.counts_for(x)
+        if finer is not None and (system.counts is None
+                                  or any(a > b for a, b in zip(finer, system.counts))):
+            # contacts grew past what their meshes in this solve resolve inside them
+            eq.log.event(f"mesh refined inside contacts (up to {max(finer)} elements) "
+                         "to resolve the profile between collocation points")
+            return x
+        if not self.polished and not same_zones(system.zones,
+                                                zone_patterns(x, eq.spec, system.counts)):
+            self.polished = True
+            return x
+        return State(outcome=Outcome.CONVERGED, edges=x, fields=fields, ctx=ctx,
+                     residual=size, message="converged", system=system)
+
+    def births(self, system, x, fields, ctx, size, outside) -> State | np.ndarray | None:
+        """Contacts born where the profile penetrates (:meth:`Equilibrium.born`): the state or
+        the edges to restart from; None when none is born."""
+        eq, log = self.eq, self.eq.log
+        regions, snapped = eq.born(fields, outside)
+        if not regions:
+            violation = eq.adhesion.gap_violation(*outside, fields)
+            return None if violation is None else _not_converged(x, fields, ctx, size,
+                                                                 violation)
+        if any(len(x) == len(y) and np.allclose(x, y, rtol=0, atol=1e-7)
+               for y in self.converged_before_births):
+            # the same equilibrium again: the contacts born from it last time vanished
+            # (detached or turned inside out) and would be born again, endlessly
+            where = ("below the cohesive range" if snapped else "negative")
+            return _not_converged(
+                x, fields, ctx, size,
+                f"contact set cycles: contacts born where the gap is {where} on the check "
+                f"grid ({len(regions)} region(s)) detach again; a finer check grid "
+                "(Discretization.check_points) or mesh may settle it")
+        if not self.changes:
+            return State(outcome=Outcome.CONVERGED, edges=x, fields=fields, ctx=ctx,
+                         residual=size, message="a contact is born", system=system,
+                         change="birth", gap=float(np.min(outside[1])))
+        self.converged_before_births.append(x.copy())
+        new = [v for (a, b, _) in regions for v in (a, b)]
+        merged, _, _, full = repair(np.concatenate([x, new]), MIN_WIDTH, MIN_GAP)
+        log.event(f"{len(regions)} contact(s) born" + (
+            " where the gap fell below the cohesive range" if snapped else ""))
+        log.records.append({"kind": "birth", "control": self.control.value,
+                            "contacts": float(len(regions))})
+        if full:
+            return State.full_contact()
+        if eq.adhesive:
+            # an adhesive contact is born far from its equilibrium, often next to a
+            # neighbour it then merges with across a closing neck, which is where
+            # Newton-type steps stall and the fallback march gets through
+            merged = eq.grow(merged, self.control, [(a, b) for (a, b, _) in regions])
+            if merged is None:
+                return State.full_contact()
+            self.just_born = True
+        return merged
+
+    def split(self, system, x, fields, ctx, size) -> State | np.ndarray | None:
+        """A contact opened where its tension exceeds what the interface holds: nowhere for
+        adhesion of vanishing range (no flaw to open from), beyond σ̃0 for a cohesive law. The
+        state or the edges to restart from; None when no contact opens."""
+        eq, log = self.eq, self.eq.log
+        strength = (0.0 if isinstance(eq.adhesion, NoAdhesion)
+                    else eq.adhesion.closed_strength(eq.prep.shape.amplitude))
+        split, where, tension = ((None, [], 0.0) if not np.isfinite(strength)
+                                 else tensile_split(fields, strength=strength))
+        if split is None:
+            return None
+        if (strength > 0.0 and not self.rezoned
+                and not same_zones(system.zones, zone_patterns(x, eq.spec, system.counts))):
+            # the edge zones were made for the contacts where this solve began: a contact
+            # that grew far has its zone's last element many times smaller than the
+            # clustered one beside it, and the stress spikes there (2.4 % above σ̃0 on a
+            # sinusoid at ζ = 0.3, λ = 5), so the cohesive law's tension is judged again on
+            # zones made for these contacts before the contact is split
+            self.rezoned = True
+            return x
+        if sum(len(split) == len(y) and np.allclose(split, y, rtol=0, atol=1e-3)
+               for y in self.splits) >= 2:
+            return self.alternating(system, x, fields, ctx, size, where, tension)
+        if not self.changes:
+            return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
+                         residual=size, message="a contact splits", change="split")
+        self.splits.append(split)
+        if any(len(split) == len(y) and np.allclose(split, y, rtol=0, atol=1e-3)
+               for y in self.splits[:-1]):
+            # the parts of the last split merged again: their solve went to the
+            # degenerate root where the gap closes (the stress intensity of both inner
+            # edges vanishes as the gap does); start the parts further apart
+            split = tensile_split(fields, widen=True, strength=strength)[0]
+            log.event("split again with the gap widened")
+        log.event("adhesionless contact split where it carried tension "
+                  f"(up to {tension:.2g} of the largest pressure)" if strength == 0.0
+                  else "contact split where its tension exceeded the cohesive stress "
+                       f"(by up to {tension:.2g} of the largest stress)")
+        return split
+
+    def alternating(self, system, x, fields, ctx, size, where, tension) -> State | np.ndarray:
+        """Split -> the parts merge -> the same tension, twice. A small tension means the
+        pressure nearly vanishes inside the contact, with a sign below what this mesh
+        resolves: that contact is refined (the edges to restart from), else a cycle."""
+        eq = self.eq
+        counts = element_counts(eq.spec, system.counts, len(x) // 2)
+        if tension > REFINED_TENSION or not self.refine:
+            return _not_converged(
+                x, fields, ctx, size,
+                "contact set cycles: a merged contact carries tension "
+                f"({tension:.2g} of the largest pressure), and the parts it is split "
+                "into merge again")
+        if not eq.policy.refine_at([c for _, c in where], [counts[j] for j, _ in where]):
+            return _not_converged(
+                x, fields, ctx, size,
+                "contact set cycles: a merged contact carries tension, and the parts "
+                f"it is split into merge again, with {eq.policy.cap} elements in the "
+                "contact")
+        eq.log.event(
+            "mesh refined in a contact whose tension and split alternate (up to "
+            f"{max(m for _, m in eq.policy.refined)} elements): its tension, "
+            f"{tension:.2g} of the largest pressure, is a nearly vanishing "
+            "pressure whose sign the mesh does not resolve")
+        self.splits.clear()
+        return x
+
+
+def _not_converged(x, fields, ctx, size, message) -> State:
+    return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
+                 residual=size, message=message)
+
+
+__all__ = ["REFINED_TENSION", "Restarts"]
