@@ -115,6 +115,138 @@ def circulant_diagonal(spectrum) -> float:
     return float((v[..., 0].sum() + 2.0 * v[..., 1:-1].sum() + v[..., -1].sum()) / n)
 
 
+class _ConstrainedGradients:
+    """The state of the Polonsky-Keer iteration on one grid: the pressure, the last search
+    direction and the counts (:func:`polonsky_keer` runs it).
+
+    :meth:`measure` evaluates the gradient of the complementary energy at the pressure and the
+    violation of the contact conditions, :meth:`stop` says whether the iteration ends there,
+    and :meth:`step` moves the pressure along the next conjugate direction.
+    """
+
+    def __init__(self, eigenvalues, heights, *, mean_pressure, penetration, start,
+                 preconditioner, tolerance: float, max_iterations: int, workers: int):
+        self.lam = np.asarray(eigenvalues).real.astype(complex)
+        self.pre = (None if preconditioner is None
+                    else np.asarray(preconditioner).real.astype(complex))
+        # with a preconditioner (steps τ ~ 1), a cell that starts to carry load takes the
+        # pressure that would close its gap alone: -τ g/A_kk
+        self.diagonal = 1.0 if self.pre is None else 1.0 / circulant_diagonal(self.lam)
+        r = np.asarray(heights, dtype=float)
+        self.mean_pressure, self.penetration = mean_pressure, penetration
+        self.load = mean_pressure is not None
+        self.w = r - 1.0 if self.load else r - 1.0 + float(penetration)
+        if start is None:
+            p = np.full(r.size, float(mean_pressure)) if self.load else np.maximum(self.w, 0.0)
+        else:
+            p = np.maximum(np.asarray(start, dtype=float), 0.0)
+        if not p.any():
+            p[int(np.argmax(self.w))] = 1.0
+        if self.load:
+            p *= mean_pressure / p.mean()
+        self.p = p
+        self.t = np.zeros_like(p)
+        self.scale = float(np.max(np.abs(self.lam)))
+        self.g_old, self.conjugate, self.shift, self.residual = 1.0, 0.0, 0.0, np.inf
+        self.applications = 0
+        self.tolerance, self.max_iterations, self.workers = tolerance, max_iterations, workers
+        self.loaded = self.gradient = None
+
+    def measure(self) -> None:
+        """The loaded cells, the gradient (the gaps, shifted by the load multiplier in load
+        control) and the residual at the current pressure."""
+        self.loaded = s = self.p > 0
+        g = convolve(self.p, self.lam, self.workers) - self.w
+        self.applications += 1
+        if self.load:
+            self.shift = float(np.mean(g[s]))
+            g -= self.shift
+        self.gradient = g
+        self.residual = violation(g, s)
+
+    def stop(self, iteration: int) -> str | None:
+        """Why the iteration ends after ``iteration`` steps (None: it goes on)."""
+        if self.residual <= self.tolerance:
+            return f"converged in {iteration} iterations"
+        if iteration == self.max_iterations:
+            return f"no convergence in {self.max_iterations} iterations"
+        return None
+
+    def _direction(self) -> np.ndarray:
+        """The next conjugate search direction on the loaded cells (the preconditioned
+        gradient when a preconditioner is given); its gradient product becomes ``g_old``."""
+        s, g = self.loaded, self.gradient
+        if self.pre is None:
+            z = g
+        else:
+            z = convolve(np.where(s, g, 0.0), self.pre, self.workers)
+            self.applications += 1
+            if self.load:
+                z -= np.mean(z[s])
+        big_g = float(g[s] @ z[s])
+        beta = self.conjugate * big_g / self.g_old if self.g_old > 0.0 else 0.0
+        self.t = np.where(s, z + beta * self.t, 0.0)
+        self.g_old = big_g
+        return self.t
+
+    def step(self) -> bool:
+        """One step along the next search direction (False: no search direction is left)."""
+        s, g = self.loaded, self.gradient
+        gs = g[s]
+        t = self._direction()
+        q = convolve(t, self.lam, self.workers)
+        self.applications += 1
+        if self.load:
+            q -= np.mean(q[s])
+        denom = float(q[s] @ t[s])
+        slope = float(gs @ t[s])
+        if (not denom > FLAT * float(t[s] @ t[s]) * self.scale and slope > 0.0
+                and np.any(t[s] > 0)):
+            # a direction without stiffness (the mean mode of an incompressible solid, with
+            # every cell loaded under a given penetration): the energy falls linearly along
+            # it, so go to the first cell it unloads
+            move = s & (t > 0)
+            self.p = np.maximum(self.p - float(np.min(self.p[move] / t[move])) * t, 0.0)
+            self.conjugate = 0.0
+            return True
+        if not denom > 0.0:
+            return self._load_overlaps()
+        tau = float(gs @ t[s]) / denom
+        p = np.maximum(self.p - tau * t, 0.0)
+        overlap = (p == 0.0) & (g < 0.0)
+        if overlap.any():
+            p[overlap] -= tau * self.diagonal * g[overlap]
+        # a new loaded set restarts the conjugate directions: always when cells start to carry
+        # load (Polonsky-Keer), and with a preconditioner also when cells stop carrying it
+        changed = overlap.any() or (self.pre is not None and bool(np.any(s & (p == 0.0))))
+        self.conjugate = 0.0 if changed else 1.0
+        if self.load:
+            p *= self.mean_pressure / p.mean()
+        self.p = p
+        return True
+
+    def _load_overlaps(self) -> bool:
+        """No descent within the loaded cells (none left, or a single one under load control):
+        load the interpenetrating cells by their own stiffness and restart (False: there are
+        none)."""
+        outside = ~self.loaded & (self.gradient < 0.0)
+        if not outside.any():
+            return False
+        self.p[outside] = -self.gradient[outside] / circulant_diagonal(self.lam)
+        if self.load:
+            self.p *= self.mean_pressure / self.p.mean()
+        self.conjugate = 0.0
+        return True
+
+    def solution(self, iterations: int, message: str) -> GridSolution:
+        """The grid solution at the current pressure."""
+        delta = self.shift if self.load else float(self.penetration)
+        return GridSolution(pressure=self.p, penetration=delta,
+                            converged=self.residual <= self.tolerance, residual=self.residual,
+                            iterations=iterations, applications=self.applications,
+                            solver=POLONSKY_KEER, message=message)
+
+
 def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None, start=None,
                   tolerance: float = 1e-10, max_iterations: int = 5000, preconditioner=None,
                   workers: int = 1) -> GridSolution:
@@ -138,95 +270,139 @@ def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None,
         circulant): the search directions are built from ``M g`` restricted to the loaded cells
         (Vollebregt 2014) instead of the gradient ``g``.
     """
-    lam = np.asarray(eigenvalues).real.astype(complex)
-    pre = None if preconditioner is None else np.asarray(preconditioner).real.astype(complex)
-    # with a preconditioner (steps τ ~ 1), a cell that starts to carry load takes the pressure
-    # that would close its gap alone: -τ g/A_kk
-    diagonal = 1.0 if pre is None else 1.0 / circulant_diagonal(lam)
-    r = np.asarray(heights, dtype=float)
-    load = mean_pressure is not None
-    w = r - 1.0 if load else r - 1.0 + float(penetration)
-    if start is None:
-        p = np.full(r.size, float(mean_pressure)) if load else np.maximum(w, 0.0)
-    else:
-        p = np.maximum(np.asarray(start, dtype=float), 0.0)
-    if not p.any():
-        p[int(np.argmax(w))] = 1.0
-    if load:
-        p *= mean_pressure / p.mean()
-    t = np.zeros_like(p)
-    scale = float(np.max(np.abs(lam)))
-    g_old, conjugate, shift, res = 1.0, 0.0, 0.0, np.inf
-    apps = 0
+    state = _ConstrainedGradients(eigenvalues, heights, mean_pressure=mean_pressure,
+                                  penetration=penetration, start=start,
+                                  preconditioner=preconditioner, tolerance=tolerance,
+                                  max_iterations=max_iterations, workers=workers)
     it = 0
     message = f"no convergence in {max_iterations} iterations"
     for it in range(max_iterations + 1):
         check_deadline()                  # the cooperative time limit (viscocontact.deadline)
-        s = p > 0
-        g = convolve(p, lam, workers) - w
-        apps += 1
-        if load:
-            shift = float(np.mean(g[s]))
-            g -= shift
-        res = violation(g, s)
-        if res <= tolerance:
-            message = f"converged in {it} iterations"
+        state.measure()
+        stopped = state.stop(it)
+        if stopped is not None:
+            message = stopped
             break
-        if it == max_iterations:
+        if not state.step():
+            message = f"search direction lost after {it} iterations"
             break
-        gs = g[s]
-        if pre is None:
-            z = g
-        else:
-            z = convolve(np.where(s, g, 0.0), pre, workers)
-            apps += 1
-            if load:
-                z -= np.mean(z[s])
-        big_g = float(gs @ z[s])
-        beta = conjugate * big_g / g_old if g_old > 0.0 else 0.0
-        t = np.where(s, z + beta * t, 0.0)
-        g_old = big_g
-        q = convolve(t, lam, workers)
-        apps += 1
-        if load:
-            q -= np.mean(q[s])
-        denom = float(q[s] @ t[s])
-        slope = float(gs @ t[s])
-        if not denom > FLAT * float(t[s] @ t[s]) * scale and slope > 0.0 and np.any(t[s] > 0):
-            # a direction without stiffness (the mean mode of an incompressible solid, with
-            # every cell loaded under a given penetration): the energy falls linearly along
-            # it, so go to the first cell it unloads
-            move = s & (t > 0)
-            p = np.maximum(p - float(np.min(p[move] / t[move])) * t, 0.0)
-            conjugate = 0.0
-            continue
-        if not denom > 0.0:
-            # no descent within the loaded cells (none left, or a single one under load
-            # control): load the interpenetrating cells by their own stiffness and restart
-            outside = ~s & (g < 0.0)
-            if not outside.any():
-                message = f"search direction lost after {it} iterations"
-                break
-            p[outside] = -g[outside] / circulant_diagonal(lam)
-            if load:
-                p *= mean_pressure / p.mean()
-            conjugate = 0.0
-            continue
-        tau = float(gs @ t[s]) / denom
-        p = np.maximum(p - tau * t, 0.0)
-        overlap = (p == 0.0) & (g < 0.0)
-        if overlap.any():
-            p[overlap] -= tau * diagonal * g[overlap]
-        # a new loaded set restarts the conjugate directions: always when cells start to carry
-        # load (Polonsky-Keer), and with a preconditioner also when cells stop carrying it
-        changed = overlap.any() or (pre is not None and bool(np.any(s & (p == 0.0))))
-        conjugate = 0.0 if changed else 1.0
-        if load:
-            p *= mean_pressure / p.mean()
-    converged = res <= tolerance
-    delta = shift if load else float(penetration)
-    return GridSolution(pressure=p, penetration=delta, converged=converged, residual=res,
-                        iterations=it, applications=apps, solver=POLONSKY_KEER, message=message)
+    return state.solution(it, message)
+
+
+class _StepControl:
+    """How the active-set steps are solved and taken: the Krylov solves loose
+    (:data:`LOOSE_KRYLOV`) while the set changes and tight once a full step kept it, tighter
+    when a tight solve falls short; the steps damped after :data:`UNDAMPED_STEPS` steps or on a
+    cycle of sets (:func:`active_set`)."""
+
+    def __init__(self, krylov_tolerance: float):
+        self.loose = LOOSE_KRYLOV if LOOSE_KRYLOV > krylov_tolerance else None
+        self.tight = krylov_tolerance
+        self.damped = False
+        self.previous: np.ndarray | None = None
+        self.full_step = False
+        self.seen: set[bytes] = set()
+
+    def _kept(self, active) -> bool:
+        """Whether ``active`` is the set of the step before."""
+        return self.previous is not None and np.array_equal(active, self.previous)
+
+    def choose(self, active: np.ndarray, iteration: int) -> None:
+        """The Krylov tolerance and damping of the step on ``active`` (step ``iteration``)."""
+        key = active.tobytes()
+        if iteration > UNDAMPED_STEPS and not self.damped:     # slow to settle: damp the steps
+            self.damped, self.loose = True, None
+        if key in self.seen and not self._kept(active):
+            if self.loose is not None:              # a cycle of inexact steps: tighten them
+                self.loose = None
+            else:                                   # a cycle of Newton steps: damp them
+                self.damped = True
+            self.seen.clear()
+        self.seen.add(key)
+        if self.loose is not None and self.full_step and self._kept(active):
+            self.loose = None             # the last full step kept the set: it is found
+
+    def taken(self, active: np.ndarray, fraction: float, unresolved: bool) -> None:
+        """Record the step on ``active`` taken by ``fraction`` (1: whole); ``unresolved``: the
+        contact conditions are not met after it."""
+        if (fraction == 1.0 and self.loose is None and self._kept(active) and unresolved
+                and self.tight > 1e-15):
+            self.tight = max(1e-3 * self.tight, 1e-15)  # the Krylov solve falls short: tighten
+        self.previous, self.full_step = active, fraction == 1.0
+
+
+def _merit(pressure, gap, stiffness: float) -> float:
+    """``|min(p, c g)|²``, the merit of the active-set line search."""
+    m = np.minimum(pressure, stiffness * gap)
+    return float(m @ m)
+
+
+def _line_search(p, g, step_p, step_g, stiffness: float, floor: float) -> float:
+    """The fraction of an active-set step to take: halved from 1 until the merit falls
+    (Armijo), down to :data:`LINE_SEARCH_SMALLEST`, or until it is below ``floor``."""
+    s = 1.0
+    before = _merit(p, g, stiffness)
+    while s > LINE_SEARCH_SMALLEST:
+        after = _merit(p + s * step_p, g + s * step_g, stiffness)
+        if after <= (1.0 - 1e-4 * s) * before or after <= floor:
+            break
+        s *= 0.5
+    return s
+
+
+def _active_cells(p, g, heights, stiffness: float, first: bool,
+                  singular_when_closed: bool) -> np.ndarray:
+    """The active set of the next step: ``p - c g > 0`` (the first: the start's loaded cells,
+    as a warm start gives a set, not a solution), never empty, and never every cell where the
+    operator is then singular."""
+    active = p > 0 if first else p - stiffness * g > 0
+    if not active.any():
+        active[int(np.argmax(heights))] = True
+    if singular_when_closed and active.all():
+        # A without its mean mode (c0 = 0) is singular on the whole grid, and under a given
+        # penetration below closure some cell has a gap: keep the least loaded one out
+        active[int(np.argmin(p - stiffness * g))] = False
+    return active
+
+
+def _update(solved, idx, p, g, delta, heights, load: bool):
+    """The steps of ``(p, Δ̃, g)`` to the solution ``solved = ([p_C, (Δ̃)], info, A p)`` of the
+    Newton system on the active cells ``idx`` (:func:`_restricted_solve`)."""
+    sol, _, product = solved
+    target = np.zeros(p.size)
+    target[idx] = sol[:idx.size]
+    step_p = target - p
+    step_d = float(sol[idx.size]) - delta if load else 0.0
+    # A·target is GMRES's last product: the step of the gaps without another one
+    step_g = product - (g + (heights - 1.0 + delta)) - step_d
+    return step_p, step_d, step_g
+
+
+def _active_start(apply, heights, start, mean_pressure, penetration, start_penetration):
+    """The active set's starting pressure, penetration and gaps."""
+    p = np.maximum(np.asarray(start, dtype=float), 0.0)
+    if not p.any():
+        p[int(np.argmax(heights))] = 1.0
+    if mean_pressure is not None:
+        p *= mean_pressure / p.mean()
+    u = apply(p)
+    if mean_pressure is None:
+        delta = float(penetration)
+    elif start_penetration is None:
+        delta = 1.0 + float(np.mean((u - heights)[p > 0]))
+    else:
+        delta = float(start_penetration)
+    return p, delta, u - (heights - 1.0 + delta)
+
+
+def _clipped(apply, p, heights, delta, mean_pressure):
+    """The pressure clipped at zero, with its gaps and residual; rescaled to ``mean_pressure``
+    unless it is None (the load row to round-off, not to GMRES's)."""
+    p = np.maximum(p, 0.0)
+    if mean_pressure is not None:
+        p *= mean_pressure / p.mean()
+    g = apply(p) - (heights - 1.0 + delta)
+    return p, g, violation(g, p > 0)
 
 
 def active_set(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
@@ -272,7 +448,6 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         # round-off (1e-7); the steps are those of the double-precision one
         inv = inv.astype(np.complex64)
     r = np.asarray(heights, dtype=float)
-    n = r.size
     load = mean_pressure is not None
     apps = [0]
 
@@ -282,95 +457,31 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
 
     stiffness = 1.0 / circulant_diagonal(lam.real)     # pressure that a unit gap is worth
     singular_when_closed = not load and lam.flat[0] == 0
-    p = np.maximum(np.asarray(start, dtype=float), 0.0)
-    if not p.any():
-        p[int(np.argmax(r))] = 1.0
-    if load:
-        p *= mean_pressure / p.mean()
-    u = apply(p)
-    if not load:
-        delta = float(penetration)
-    elif start_penetration is None:
-        delta = 1.0 + float(np.mean((u - r)[p > 0]))
-    else:
-        delta = float(start_penetration)
-    g = u - (r - 1.0 + delta)
-
-    def merit(pressure, gap):
-        m = np.minimum(pressure, stiffness * gap)
-        return float(m @ m)
-
-    loose = LOOSE_KRYLOV if LOOSE_KRYLOV > krylov_tolerance else None
-    tight = krylov_tolerance
-    damped = False
+    p, delta, g = _active_start(apply, r, start, mean_pressure, penetration, start_penetration)
+    control = _StepControl(krylov_tolerance)
     floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
-    previous: np.ndarray | None = None
-    full_step = False
-    seen: set[bytes] = set()
-    res = np.inf
     for it in range(1, max_iterations + 1):
         check_deadline()                  # the cooperative time limit (viscocontact.deadline)
-        # the first set is the start's loaded cells (a warm start gives a set, not a solution)
-        active = p > 0 if it == 1 else p - stiffness * g > 0
-        if not active.any():
-            active[int(np.argmax(r))] = True
-        if singular_when_closed and active.all():
-            # A without its mean mode (c0 = 0) is singular on the whole grid, and under a given
-            # penetration below closure some cell has a gap: keep the least loaded one out
-            active[int(np.argmin(p - stiffness * g))] = False
-        key = active.tobytes()
-        if it > UNDAMPED_STEPS and not damped:       # slow to settle: damp the steps
-            damped, loose = True, None
-        if key in seen and not (previous is not None and np.array_equal(active, previous)):
-            if loose is not None:                    # a cycle of inexact steps: tighten them
-                loose = None
-            else:                                    # a cycle of Newton steps: damp them
-                damped = True
-            seen.clear()
-        seen.add(key)
-        if (loose is not None and full_step and previous is not None
-                and np.array_equal(active, previous)):
-            loose = None                  # the last full step kept the set: it is found
+        active = _active_cells(p, g, r, stiffness, it == 1, singular_when_closed)
+        control.choose(active, it)
         idx = np.flatnonzero(active)
-        sol, info, product = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n,
-                                               loose, (tight, 0.5 * tolerance), restart)
-        target = np.zeros(n)
-        target[idx] = sol[:idx.size]
-        step_p = target - p
-        step_d = float(sol[idx.size]) - delta if load else 0.0
-        # A·target is GMRES's last product: the step of the gaps without another one
-        step_g = product - (g + (r - 1.0 + delta)) - step_d
-        s = 1.0
-        if damped:
-            before = merit(p, g)
-            while s > LINE_SEARCH_SMALLEST:
-                after = merit(p + s * step_p, g + s * step_g)
-                if after <= (1.0 - 1e-4 * s) * before or after <= floor:
-                    break
-                s *= 0.5
-        p = p + s * step_p
-        g = g + s * step_g
+        solved = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, r.size,
+                                   control.loose, (control.tight, 0.5 * tolerance), restart)
+        step_p, step_d, step_g = _update(solved, idx, p, g, delta, r, load)
+        s = _line_search(p, g, step_p, step_g, stiffness, floor) if control.damped else 1.0
+        p, g = p + s * step_p, g + s * step_g
         delta += s * step_d
         res = violation(g, p > 0)
-        if (s == 1.0 and loose is None and previous is not None
-                and np.array_equal(active, previous) and res > tolerance and tight > 1e-15):
-            tight = max(1e-3 * tight, 1e-15)      # the Krylov solve falls short: tighten it
-        previous, full_step = active, s == 1.0
-        if loose is None and info == 0 and res <= tolerance and \
+        control.taken(active, s, res > tolerance)
+        if control.loose is None and solved[1] == 0 and res <= tolerance and \
                 np.min(p) >= -tolerance * stiffness:
-            p = np.maximum(p, 0.0)
-            if load:
-                p *= mean_pressure / p.mean()    # the load row to round-off, not to GMRES's
-            g = apply(p) - (r - 1.0 + delta)
-            res = violation(g, p > 0)
+            p, g, res = _clipped(apply, p, r, delta, mean_pressure)
             if res <= 2.0 * tolerance:
-                how = ", damped" if damped else ""
+                how = ", damped" if control.damped else ""
                 return GridSolution(pressure=p, penetration=delta, converged=True, residual=res,
                                     iterations=it, applications=apps[0], solver=ACTIVE_SET,
                                     message=f"converged in {it} active-set steps{how}")
-    p = np.maximum(p, 0.0)
-    g = apply(p) - (r - 1.0 + delta)
-    res = violation(g, p > 0)
+    p, g, res = _clipped(apply, p, r, delta, None)
     return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
                         iterations=max_iterations, applications=apps[0], solver=ACTIVE_SET,
                         message=f"no convergence in {max_iterations} active-set steps")
