@@ -247,6 +247,167 @@ def _moved(extents, residuals, fresh, gap, before):
     return moved
 
 
+def _start_extents(contact, width: int) -> list:
+    """The run extents of the cells of a given contact set, row by row (a warm start: the
+    cohesive stress on these cells only)."""
+    return [[(-0.5, width - 0.5)] if c.all() else
+            [(first - 0.5, last + 0.5) for first, last in _runs(c)]
+            for c in np.asarray(contact).reshape(-1, width)]
+
+
+def _tip_residuals(rows_g, extents, same, law: GridLaw, width: int) -> list:
+    """Each tip's residual ``g - η``, row by row: None for a row whose runs changed, an empty
+    list for a row in range from end to end."""
+    return [None if not ok else [] if _whole(ext, width) else
+            [(_interp(gr, lo) - law.opening, _interp(gr, hi) - law.opening)
+             for lo, hi in ext]
+            for gr, ext, ok in zip(rows_g, extents, same)]
+
+
+class _TipIteration:
+    """The state of :func:`cohesive_solve`: the cell pressure, penetration, gaps and contact
+    of the last inner solve, the tips (run extents per row) of the next one, and the counts.
+
+    :meth:`solve` runs the inner adhesionless solve for the current tips, :meth:`settled`
+    moves the tips (and says whether they are found), :meth:`result` is the outcome.
+    """
+
+    def __init__(self, circulant, heights, law: GridLaw, *, mean_pressure, penetration, start,
+                 start_penetration, start_contact, options: dict, rows: int,
+                 contact_start: bool):
+        self.circulant, self.law, self.options = circulant, law, options
+        self.mean_pressure, self.penetration = mean_pressure, penetration
+        self.start_penetration, self.contact_start = start_penetration, contact_start
+        self.lam = circulant.eigenvalues
+        self.r = r = np.asarray(heights, dtype=float)
+        self.rows, self.width = rows, r.size // rows
+        self.load = load = mean_pressure is not None
+        workers = options["workers"]
+        self.p = p = np.asarray(start, dtype=float).copy()
+        u = convolve(p, self.lam, workers)
+        if not load:
+            delta = float(penetration)
+        elif start_penetration is None:
+            delta = 1.0 + float(np.mean((u - r)[p > 0])) if np.any(p > 0) else 0.0
+        else:
+            delta = float(start_penetration)
+        self.delta = delta
+        self.g = u - (r - 1.0 + delta)
+        if start_contact is None:
+            self.contact = p > 0.0
+            self.extents = _row_tips(self.g, self.contact, law, rows)
+        else:
+            self.contact = np.asarray(start_contact, bool)
+            self.extents = _start_extents(self.contact, self.width)
+        self.before: list | None = None  # the previous solve's extents and tip residuals, per row
+        self.loose = LOOSE_INNER
+        self.iterations = self.applications = 0
+        self.solution: GridSolution | None = None
+
+    def solve(self, k: int) -> GridSolution:
+        """Inner solve ``k`` (from 1): the adhesionless problem of the shifted pressure for the
+        current tips; the pressure, penetration, gaps and contact then are its."""
+        law, opts = self.law, self.options
+        self.w = w = np.concatenate([tip_weights(e, self.width) for e in self.extents])
+        shifted = ranged_heights(self.r, w, law, self.lam, opts["workers"])
+        q0 = np.maximum(self.p + law.strength * w, 0.0)
+        if self.contact_start:
+            q0[~self.contact] = 0.0       # a cell new to a zone is cohesive, not in contact
+        if not q0.any():
+            q0[int(np.argmax(shifted))] = 1.0
+        control: dict[str, Any] = (
+            {"mean_pressure": float(self.mean_pressure) + law.strength * float(w.mean())}
+            if self.load else {"penetration": float(self.penetration)})
+        tolerance = opts["tolerance"]
+        self.inner = inner = tolerance if not self.contact_start else max(tolerance, self.loose)
+        options = dict(opts, start=q0, tolerance=inner,
+                       krylov_tolerance=max(opts["krylov_tolerance"], 0.1 * inner), **control)
+        counts = self._inner_solves(k, shifted, options)
+        sol = self.solution = counts[-1]
+        self.iterations += sum(c.iterations for c in counts)
+        self.applications += sum(c.applications for c in counts)
+        q, self.delta = sol.pressure, float(sol.penetration)
+        self.p = q - law.strength * w
+        self.g = convolve(self.p, self.lam, opts["workers"]) - (self.r - 1.0 + self.delta)
+        self.contact = q > 0.0
+        return sol
+
+    def _inner_solves(self, k: int, shifted, options: dict) -> list[GridSolution]:
+        """The grid solves of inner solve ``k``, the last one the answer (a contact-free answer
+        takes none and counts nothing)."""
+        circulant, counts = self.circulant, []
+        sol = None
+        if not self.load and np.max(shifted) - 1.0 + float(self.penetration) <= 0.0:
+            # no cell reaches the plane under the cohesive stress (tension without contact):
+            # q = 0 is the solution
+            sol = GridSolution(pressure=np.zeros(shifted.size),
+                               penetration=float(self.penetration), converged=True,
+                               residual=0.0, iterations=0, applications=0, solver="none",
+                               message="no contact")
+        elif (k > 1 or circulant.symmetric or self.contact_start
+              or self.start_penetration is not None):
+            # from the last solution (the tips moved a little), or from a start with its
+            # penetration, a nearby state (the approach's last step, a coarser grid's): on a
+            # λ = 5 sinusoid at ζ = 1, Δ̃ = 0.5 the presolve's start failed at 4096 cells
+            # where this one converges
+            sol = grid_solve(circulant, shifted,
+                             start_penetration=self.delta if self.load else None, **options)
+            counts.append(sol)
+        if sol is None or not (sol.converged or circulant.symmetric or sol.solver == "none"):
+            # a start far from the solution (the adhesionless contact, a coarser grid's carried
+            # over): the active set then needs damped steps by the dozen (on a sinusoid at
+            # ζ = 1e-2 it failed in 100), so it starts from the solution for the operator's
+            # symmetric part, as on the spectral method's first grid
+            sol = grid_solve(circulant, shifted, presolve=True, **options)
+            counts.append(sol)
+        return counts if counts else [sol]
+
+    def settled(self) -> bool:
+        """Whether the tips are found (the runs the same, every tip's residual within
+        ``10·tolerance``, the last inner solve at the tolerance); if not, the next tips: where
+        the gap crosses η in a row whose runs changed, else by secants (:func:`_moved`)."""
+        width, law = self.width, self.law
+        fresh = _row_tips(self.g, self.contact, law, self.rows)
+        same = [_matches(old, new, width) or (_whole(old, width) and _whole(new, width))
+                for old, new in zip(self.extents, fresh)]
+        if not any(same):
+            self.extents, self.before = fresh, None     # the runs changed: start the tips again
+            return False
+        rows_g = np.asarray(self.g).reshape(self.rows, width)
+        residuals = _tip_residuals(rows_g, self.extents, same, law, width)
+        worst = max((abs(v) for row in residuals if row is not None for pair in row for v in pair),
+                    default=0.0)
+        tolerance = self.options["tolerance"]
+        if all(same) and worst <= 10.0 * tolerance and self.inner == tolerance:
+            return True
+        # inexact inner solves while the tips move: a hundredth of their largest residual
+        self.loose = 1e-2 * worst if all(same) else LOOSE_INNER
+        before = self.before
+        moved_rows = [fr if not res else
+                      _moved(ext, res, fr, gr, None if before is None else before[i])
+                      for i, (ext, res, fr, gr) in enumerate(zip(self.extents, residuals, fresh,
+                                                                  rows_g))]
+        self.before = [None if res is None else list(zip(ext, res))
+                       for ext, res in zip(self.extents, residuals)]
+        self.extents = moved_rows
+        return False
+
+    def result(self, sets: int, converged: bool, message: str) -> CohesiveSolution:
+        """The outcome after ``sets`` inner solves."""
+        p, g, contact, w, sol = self.p, self.g, self.contact, self.w, self.solution
+        res = law_violation(p, g, contact, w, self.law)
+        if converged:
+            message = (f"converged: {int(contact.sum())} contact and "
+                       f"{int(np.sum((w > 0) & ~contact))} cohesive cells after {sets} inner "
+                       "solves")
+        out = GridSolution(pressure=p, penetration=self.delta, converged=converged,
+                           residual=res, iterations=self.iterations,
+                           applications=self.applications,
+                           solver="cohesive " + (sol.solver if sol is not None else "grid"),
+                           message=message)
+        return CohesiveSolution(solution=out, contact=contact, weights=w, gap=g, sets=sets)
+
+
 def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, penetration=None,
                    start=None, start_penetration=None, start_contact=None,
                    tolerance: float = 1e-10, krylov_tolerance: float = 1e-10,
@@ -303,118 +464,20 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
                          start_penetration=start_penetration, tolerance=tolerance,
                          krylov_tolerance=krylov_tolerance, max_updates=max_updates,
                          max_iterations=max_iterations, max_sets=max_sets, workers=workers)
-    lam = circulant.eigenvalues
-    r = np.asarray(heights, dtype=float)
-    n = r.size
-    width = n // rows
-
-    def by_row(values):
-        return np.asarray(values).reshape(rows, width)
-
-    load = mean_pressure is not None
-    p = np.asarray(start, dtype=float).copy()
-    u = convolve(p, lam, workers)
-    if not load:
-        delta = float(penetration)
-    elif start_penetration is None:
-        delta = 1.0 + float(np.mean((u - r)[p > 0])) if np.any(p > 0) else 0.0
-    else:
-        delta = float(start_penetration)
-    g = u - (r - 1.0 + delta)
-    if start_contact is None:
-        contact = p > 0.0
-        extents = _row_tips(g, contact, law, rows)
-    else:
-        contact = np.asarray(start_contact, bool)
-        extents = [[(-0.5, width - 0.5)] if c.all() else
-                   [(first - 0.5, last + 0.5) for first, last in _runs(c)]
-                   for c in by_row(contact)]
-    before: list | None = None    # the previous solve's extents and tip residuals, per row
-    loose = LOOSE_INNER
-    iterations = applications = 0
-    sol: GridSolution | None = None
+    options = dict(tolerance=tolerance, krylov_tolerance=krylov_tolerance,
+                   max_updates=max_updates, max_iterations=max_iterations, workers=workers)
+    tips = _TipIteration(circulant, heights, law, mean_pressure=mean_pressure,
+                         penetration=penetration, start=start,
+                         start_penetration=start_penetration, start_contact=start_contact,
+                         options=options, rows=rows, contact_start=contact_start)
     converged = False
     message = f"the cohesive tips did not settle in {max_sets} solves"
     for k in range(1, max_sets + 1):
-        w = np.concatenate([tip_weights(e, width) for e in extents])
-        shifted = ranged_heights(r, w, law, lam, workers)
-        q0 = np.maximum(p + law.strength * w, 0.0)
-        if contact_start:
-            q0[~contact] = 0.0            # a cell new to a zone is cohesive, not in contact
-        if not q0.any():
-            q0[int(np.argmax(shifted))] = 1.0
-        control: dict[str, Any] = (
-            {"mean_pressure": float(mean_pressure) + law.strength * float(w.mean())} if load
-            else {"penetration": float(penetration)})
-        inner = tolerance if not contact_start else max(tolerance, loose)
-        options = dict(start=q0, tolerance=inner,
-                       krylov_tolerance=max(krylov_tolerance, 0.1 * inner),
-                       max_updates=max_updates, max_iterations=max_iterations, workers=workers,
-                       **control)
-        counts = []
-        sol = None
-        if not load and np.max(shifted) - 1.0 + float(penetration) <= 0.0:
-            # no cell reaches the plane under the cohesive stress (tension without contact):
-            # q = 0 is the solution
-            sol = GridSolution(pressure=np.zeros(n), penetration=float(penetration),
-                               converged=True, residual=0.0, iterations=0, applications=0,
-                               solver="none", message="no contact")
-        elif k > 1 or circulant.symmetric or contact_start or start_penetration is not None:
-            # from the last solution (the tips moved a little), or from a start with its
-            # penetration, a nearby state (the approach's last step, a coarser grid's): on a
-            # λ = 5 sinusoid at ζ = 1, Δ̃ = 0.5 the presolve's start failed at 4096 cells
-            # where this one converges
-            sol = grid_solve(circulant, shifted, start_penetration=delta if load else None,
-                             **options)
-            counts.append(sol)
-        if sol is None or not (sol.converged or circulant.symmetric or sol.solver == "none"):
-            # a start far from the solution (the adhesionless contact, a coarser grid's carried
-            # over): the active set then needs damped steps by the dozen (on a sinusoid at
-            # ζ = 1e-2 it failed in 100), so it starts from the solution for the operator's
-            # symmetric part, as on the spectral method's first grid
-            sol = grid_solve(circulant, shifted, presolve=True, **options)
-            counts.append(sol)
-        iterations += sum(c.iterations for c in counts)
-        applications += sum(c.applications for c in counts)
-        q, delta = sol.pressure, float(sol.penetration)
-        p = q - law.strength * w
-        g = convolve(p, lam, workers) - (r - 1.0 + delta)
-        contact = q > 0.0
+        sol = tips.solve(k)
         if not sol.converged:
             message = f"inner solve: {sol.message}"
             break
-        fresh = _row_tips(g, contact, law, rows)
-        same = [_matches(old, new, width) or (_whole(old, width) and _whole(new, width))
-                for old, new in zip(extents, fresh)]
-        if not any(same):
-            extents, before = fresh, None           # the runs changed: start the tips again
-            continue
-        rows_g = by_row(g)
-        # a row whose runs changed starts its tips again; the others move theirs by secants
-        residuals = [None if not ok else [] if _whole(ext, width) else
-                     [(_interp(gr, lo) - law.opening, _interp(gr, hi) - law.opening)
-                      for lo, hi in ext]
-                     for gr, ext, ok in zip(rows_g, extents, same)]
-        worst = max((abs(v) for row in residuals if row is not None for pair in row for v in pair),
-                    default=0.0)
-        if all(same) and worst <= 10.0 * tolerance and inner == tolerance:
+        if tips.settled():
             converged = True
             break
-        # inexact inner solves while the tips move: a hundredth of their largest residual
-        loose = 1e-2 * worst if all(same) else LOOSE_INNER
-        moved_rows = [fr if not res else
-                      _moved(ext, res, fr, gr, None if before is None else before[i])
-                      for i, (ext, res, fr, gr) in enumerate(zip(extents, residuals, fresh,
-                                                                  rows_g))]
-        before = [None if res is None else list(zip(ext, res))
-                  for ext, res in zip(extents, residuals)]
-        extents = moved_rows
-    res = law_violation(p, g, contact, w, law)
-    if converged:
-        message = (f"converged: {int(contact.sum())} contact and "
-                   f"{int(np.sum((w > 0) & ~contact))} cohesive cells after {k} inner solves")
-    out = GridSolution(pressure=p, penetration=delta, converged=converged, residual=res,
-                       iterations=iterations, applications=applications,
-                       solver="cohesive " + (sol.solver if sol is not None else "grid"),
-                       message=message)
-    return CohesiveSolution(solution=out, contact=contact, weights=w, gap=g, sets=k)
+    return tips.result(k, converged, message)
