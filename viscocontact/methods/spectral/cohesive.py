@@ -19,7 +19,7 @@ zone's tip), the shifted pressure ``q = p + σ̃0 w`` obeys the adhesionless con
 stress, ``r̃ + σ̃0 A w``, and in load control the load raised by ``σ̃0 mean(w)``. So for given
 tips one adhesionless grid solve (Polonsky-Keer or the active set) gives the equilibrium, and
 the tips are found by iterating on the gaps, each tip ``g = η`` placed between two cell centres
-(:func:`tip_positions`, :func:`tip_weights`, :func:`cohesive_solve`).
+(:mod:`~viscocontact.methods.spectral.tips`, :func:`cohesive_solve`).
 
 The law is non-convex (the traction jumps at ``g = η``), so a scene can have several equilibria
 (the JKR-like branches); this iteration finds the one it reaches from its start, and the
@@ -35,17 +35,20 @@ from typing import Any
 import attrs
 import numpy as np
 
-from .edges import runs
 from .operator import convolve
 from .solvers import GridSolution, grid_solve, violation
+from .tips import (FLATTEST_SLOPE, contact_extents, moved_tips, row_tips, same_runs,
+                   tip_positions, tip_residuals, tip_weights, whole_row)
+
+__all__ = ["GridLaw", "CohesiveSolution", "cohesive_solve", "zone_cells", "ranged_heights",
+           "law_violation", "tip_positions", "tip_weights", "MAX_SETS", "LOOSE_INNER",
+           "FLATTEST_SLOPE", "CELLS_PER_ZONE"]
 
 #: Most inner solves per grid.
 MAX_SETS = 60
 #: Residual of the inner solves while the runs change (``contact_start``; then a hundredth of the
 #: tips' largest residual, down to the tolerance).
 LOOSE_INNER = 1e-6
-#: A tip's secant slope is used down to this fraction of the gap's own slope there.
-FLATTEST_SLOPE = 0.05
 #: Fewest cells per quasi-static Dugdale zone ``h̃0²/(4γ̃)`` on the first trusted grid (a
 #: viscoelastic zone lies within ``[a0/2, βa0]``).
 CELLS_PER_ZONE = 32.0
@@ -80,54 +83,6 @@ def ranged_heights(heights, weights, law: GridLaw, eigenvalues, workers: int = 1
     adhesionless problem, ``w`` the share of each cell under the cohesive stress."""
     return np.asarray(heights, dtype=float) + law.strength * convolve(
         np.asarray(weights, dtype=float), eigenvalues, workers)
-
-
-def _runs(inside: np.ndarray) -> list[tuple[int, int]]:
-    """``(first, last)`` of each cyclic run of True cells, ``last >= first`` (unwrapped)."""
-    return [(f, f + n - 1) for f, n in runs(inside)]
-
-
-def _interp(values: np.ndarray, position: float) -> float:
-    """``values`` (periodic, at the integer cell coordinates) at ``position``, linearly."""
-    k = int(np.floor(position))
-    t = position - k
-    n = values.size
-    return float((1.0 - t) * values[k % n] + t * values[(k + 1) % n])
-
-
-def tip_positions(gap, contact, law: GridLaw) -> list[tuple[float, float]]:
-    """The extent ``[L, R]`` (cell coordinates: cell ``k`` spans ``[k - 1/2, k + 1/2]``) of each
-    run of cells in range (in contact or with ``g < η``), its tips ``g = η`` placed by linear
-    interpolation between the last centre in range and the first out of it."""
-    g = np.asarray(gap, dtype=float)
-    inside = np.asarray(contact, bool) | (g < law.opening)
-    n = g.size
-    if inside.all():
-        return [(-0.5, n - 0.5)]
-    out = []
-    for first, last in _runs(inside):
-        ends = []
-        for a, b in ((first, first - 1), (last, last + 1)):
-            rise = g[b % n] - g[a % n]
-            t = (law.opening - g[a % n]) / rise if rise > 0 else 0.5
-            ends.append(a + (b - a) * min(max(t, 0.0), 1.0))
-        out.append((ends[0], ends[1]))
-    return out
-
-
-def tip_weights(extents, points: int) -> np.ndarray:
-    """The share of each cell under the cohesive stress for runs of extents ``[L, R]``
-    (:func:`tip_positions`): the cells within a run wholly, the cell that holds a tip in
-    proportion to its part inside (a tip quantised to whole cells moves the load by up to
-    ``σ̃0 h`` per tip, a first-order error that, on a slow solid, drowns its small friction)."""
-    w = np.zeros(points)
-    for lo, hi in extents:
-        if hi - lo >= points:
-            return np.ones(points)
-        k = np.arange(int(np.floor(lo + 0.5)), int(np.floor(hi + 0.5)) + 1)
-        share = np.clip(np.minimum(k + 0.5, hi) - np.maximum(k - 0.5, lo), 0.0, 1.0)
-        np.add.at(w, k % points, share)
-    return np.minimum(w, 1.0)
 
 
 def law_violation(pressure, gap, contact, weights, law: GridLaw) -> float:
@@ -177,93 +132,6 @@ class CohesiveSolution:
     sets: int
 
 
-def _matches(old, new, points: int) -> bool:
-    """Whether two lists of run extents describe the same runs (same count, each new run
-    overlapping its old one): the tips can then be moved by secants."""
-    if len(old) != len(new):
-        return False
-    for (a, b), (c, d) in zip(old, new):
-        if b - a >= points or d - c >= points or d < a or c > b:
-            return False
-    return True
-
-
-def _secant(position, residual, before, slope_hint):
-    """The next position of one tip from its last two residuals (``before``: the previous
-    ``(position, residual)``), or None when they give no usable slope (same position, or a
-    slope against the gap's own or far flatter than a twentieth of it). Two residuals of
-    opposite signs bracket the tip: the secant then interpolates between them, whatever its
-    slope."""
-    if before is None or position == before[0]:
-        return None
-    slope = (residual - before[1]) / (position - before[0])
-    if residual * before[1] < 0.0:
-        return position - residual / slope
-    if not slope * slope_hint > 0 or abs(slope) < 0.05 * abs(slope_hint):
-        return None
-    return position - residual / slope
-
-
-def _tip_step(position, residual, before, fresh, slope_hint):
-    """The next position of one tip: the secant (:func:`_secant`), else, when the fixed point
-    ``fresh`` (where the gap crosses η) moves on in the direction of the last move but by less
-    than twice it, twice the last move (a zone that grows under its own stress, the jump of a
-    snap, or a soft zone whose fixed point creeps: the moves double until the residual changes
-    sign, and the secant then interpolates), else ``fresh``."""
-    moved = _secant(position, residual, before, slope_hint)
-    if moved is not None:
-        return moved
-    if before is None:
-        return fresh
-    last, ahead = position - before[0], fresh - position
-    if last * ahead > 0.0 and abs(ahead) < 2.0 * abs(last):
-        return position + 2.0 * last
-    return fresh
-
-
-def _row_tips(gap, contact, law: GridLaw, rows: int) -> list:
-    """:func:`tip_positions` of every row (cells flat, row by row)."""
-    g = np.asarray(gap).reshape(rows, -1)
-    c = np.asarray(contact).reshape(rows, -1)
-    return [tip_positions(gr, cr, law) for gr, cr in zip(g, c)]
-
-
-def _whole(extents, points: int) -> bool:
-    """Whether a row is in range from end to end (one run over every cell: no tips)."""
-    return len(extents) == 1 and extents[0][1] - extents[0][0] >= points
-
-
-def _moved(extents, residuals, fresh, gap, before):
-    """The next tips of one row: each by the secant of its last two residuals (``before``: the
-    previous extents and residuals of the row), else where the gap crosses η (``fresh``)."""
-    moved = []
-    for j, ((lo, hi), (r_lo, r_hi), (f_lo, f_hi)) in enumerate(zip(extents, residuals, fresh)):
-        old = None if before is None else before[j]
-        new_lo = _tip_step(lo, r_lo, None if old is None else (old[0][0], old[1][0]), f_lo,
-                           _interp(gap, lo + 0.5) - _interp(gap, lo - 0.5))
-        new_hi = _tip_step(hi, r_hi, None if old is None else (old[0][1], old[1][1]), f_hi,
-                           _interp(gap, hi + 0.5) - _interp(gap, hi - 0.5))
-        moved.append((new_lo, new_hi))
-    return moved
-
-
-def _start_extents(contact, width: int) -> list:
-    """The run extents of the cells of a given contact set, row by row (a warm start: the
-    cohesive stress on these cells only)."""
-    return [[(-0.5, width - 0.5)] if c.all() else
-            [(first - 0.5, last + 0.5) for first, last in _runs(c)]
-            for c in np.asarray(contact).reshape(-1, width)]
-
-
-def _tip_residuals(rows_g, extents, same, law: GridLaw, width: int) -> list:
-    """Each tip's residual ``g - η``, row by row: None for a row whose runs changed, an empty
-    list for a row in range from end to end."""
-    return [None if not ok else [] if _whole(ext, width) else
-            [(_interp(gr, lo) - law.opening, _interp(gr, hi) - law.opening)
-             for lo, hi in ext]
-            for gr, ext, ok in zip(rows_g, extents, same)]
-
-
 class _TipIteration:
     """The state of :func:`cohesive_solve`: the cell pressure, penetration, gaps and contact
     of the last inner solve, the tips (run extents per row) of the next one, and the counts.
@@ -295,10 +163,10 @@ class _TipIteration:
         self.g = u - (r - 1.0 + delta)
         if start_contact is None:
             self.contact = p > 0.0
-            self.extents = _row_tips(self.g, self.contact, law, rows)
+            self.extents = row_tips(self.g, self.contact, law, rows)
         else:
             self.contact = np.asarray(start_contact, bool)
-            self.extents = _start_extents(self.contact, self.width)
+            self.extents = contact_extents(self.contact, self.width)
         self.before: list | None = None  # the previous solve's extents and tip residuals, per row
         self.loose = LOOSE_INNER
         self.iterations = self.applications = 0
@@ -365,16 +233,16 @@ class _TipIteration:
     def settled(self) -> bool:
         """Whether the tips are found (the runs the same, every tip's residual within
         ``10·tolerance``, the last inner solve at the tolerance); if not, the next tips: where
-        the gap crosses η in a row whose runs changed, else by secants (:func:`_moved`)."""
+        the gap crosses η in a row whose runs changed, else by secants (:func:`moved_tips`)."""
         width, law = self.width, self.law
-        fresh = _row_tips(self.g, self.contact, law, self.rows)
-        same = [_matches(old, new, width) or (_whole(old, width) and _whole(new, width))
+        fresh = row_tips(self.g, self.contact, law, self.rows)
+        same = [same_runs(old, new, width) or (whole_row(old, width) and whole_row(new, width))
                 for old, new in zip(self.extents, fresh)]
         if not any(same):
             self.extents, self.before = fresh, None     # the runs changed: start the tips again
             return False
         rows_g = np.asarray(self.g).reshape(self.rows, width)
-        residuals = _tip_residuals(rows_g, self.extents, same, law, width)
+        residuals = tip_residuals(rows_g, self.extents, same, law, width)
         worst = max((abs(v) for row in residuals if row is not None for pair in row for v in pair),
                     default=0.0)
         tolerance = self.options["tolerance"]
@@ -384,7 +252,7 @@ class _TipIteration:
         self.loose = 1e-2 * worst if all(same) else LOOSE_INNER
         before = self.before
         moved_rows = [fr if not res else
-                      _moved(ext, res, fr, gr, None if before is None else before[i])
+                      moved_tips(ext, res, fr, gr, None if before is None else before[i])
                       for i, (ext, res, fr, gr) in enumerate(zip(self.extents, residuals, fresh,
                                                                   rows_g))]
         self.before = [None if res is None else list(zip(ext, res))
