@@ -138,6 +138,18 @@ def _clipped(apply, p, heights, delta, mean_pressure):
     return p, g, violation(g, p > 0)
 
 
+def _preconditioner(circulant):
+    """The eigenvalues of the inverse circulant that precondition the Krylov solves.
+
+    On a 2D grid the preconditioner runs in single precision (half the cost of its transforms):
+    GMRES keeps the preconditioned directions (flexible GMRES), so its residual is that of the
+    double-precision operator whatever the preconditioner's round-off (1e-7); the steps are
+    those of the double-precision one.
+    """
+    inv = circulant.inverse
+    return inv.astype(np.complex64) if np.ndim(inv) == 2 else inv
+
+
 def active_set(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
                start_penetration: float | None = None, tolerance: float = 1e-10,
                krylov_tolerance: float = 1e-10, max_iterations: int = 100, restart: int = 60,
@@ -173,13 +185,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         Relative tolerance of the tight GMRES solves.
     """
     lam = circulant.eigenvalues
-    inv = circulant.inverse
-    if np.ndim(inv) == 2:
-        # on a 2D grid the preconditioner runs in single precision (half the cost of its
-        # transforms): GMRES keeps the preconditioned directions (flexible GMRES), so its
-        # residual is that of the double-precision operator whatever the preconditioner's
-        # round-off (1e-7); the steps are those of the double-precision one
-        inv = inv.astype(np.complex64)
+    inv = _preconditioner(circulant)
     r = np.asarray(heights, dtype=float)
     load = mean_pressure is not None
     apps = [0]
