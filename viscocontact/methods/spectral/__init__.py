@@ -21,7 +21,7 @@ Method
   gradients when ``A`` is symmetric (elastic, or ζ at a limit), a primal-dual active set with
   right-preconditioned GMRES otherwise (viscoelastic); load control (``p̃∞`` given) and penetration
   control (``Δ̃`` given).
-* Grids (:mod:`~viscocontact.methods.spectral.method`): nested iteration from at most 256 cells,
+* Grids (:mod:`~viscocontact.methods.spectral.ladder`): nested iteration from at most 256 cells,
   each grid starting from the previous one's solution; from the first grid with
   ``32·√(1e-3/tolerance)`` cells per shortest wavelength of the profile
   (:attr:`Profile.shortest_wavelength`) on, the change of ``Ã`` and ``μ`` from the previous grid

@@ -19,7 +19,7 @@ zone's tip), the shifted pressure ``q = p + σ̃0 w`` obeys the adhesionless con
 stress, ``r̃ + σ̃0 A w``, and in load control the load raised by ``σ̃0 mean(w)``. So for given
 tips one adhesionless grid solve (Polonsky-Keer or the active set) gives the equilibrium, and
 the tips are found by iterating on the gaps, each tip ``g = η`` placed between two cell centres
-(:func:`tip_positions`, :func:`tip_weights`, :func:`cohesive_solve`).
+(:mod:`~viscocontact.methods.spectral.tips`, :func:`cohesive_solve`).
 
 The law is non-convex (the traction jumps at ``g = η``), so a scene can have several equilibria
 (the JKR-like branches); this iteration finds the one it reaches from its start, and the
@@ -35,17 +35,20 @@ from typing import Any
 import attrs
 import numpy as np
 
-from .edges import runs
 from .operator import convolve
 from .solvers import GridSolution, grid_solve, violation
+from .tips import (FLATTEST_SLOPE, contact_extents, moved_tips, row_tips, same_runs,
+                   tip_positions, tip_residuals, tip_weights, whole_row)
+
+__all__ = ["GridLaw", "CohesiveSolution", "cohesive_solve", "zone_cells", "ranged_heights",
+           "law_violation", "tip_positions", "tip_weights", "MAX_SETS", "LOOSE_INNER",
+           "FLATTEST_SLOPE", "CELLS_PER_ZONE"]
 
 #: Most inner solves per grid.
 MAX_SETS = 60
 #: Residual of the inner solves while the runs change (``contact_start``; then a hundredth of the
 #: tips' largest residual, down to the tolerance).
 LOOSE_INNER = 1e-6
-#: A tip's secant slope is used down to this fraction of the gap's own slope there.
-FLATTEST_SLOPE = 0.05
 #: Fewest cells per quasi-static Dugdale zone ``h̃0²/(4γ̃)`` on the first trusted grid (a
 #: viscoelastic zone lies within ``[a0/2, βa0]``).
 CELLS_PER_ZONE = 32.0
@@ -80,54 +83,6 @@ def ranged_heights(heights, weights, law: GridLaw, eigenvalues, workers: int = 1
     adhesionless problem, ``w`` the share of each cell under the cohesive stress."""
     return np.asarray(heights, dtype=float) + law.strength * convolve(
         np.asarray(weights, dtype=float), eigenvalues, workers)
-
-
-def _runs(inside: np.ndarray) -> list[tuple[int, int]]:
-    """``(first, last)`` of each cyclic run of True cells, ``last >= first`` (unwrapped)."""
-    return [(f, f + n - 1) for f, n in runs(inside)]
-
-
-def _interp(values: np.ndarray, position: float) -> float:
-    """``values`` (periodic, at the integer cell coordinates) at ``position``, linearly."""
-    k = int(np.floor(position))
-    t = position - k
-    n = values.size
-    return float((1.0 - t) * values[k % n] + t * values[(k + 1) % n])
-
-
-def tip_positions(gap, contact, law: GridLaw) -> list[tuple[float, float]]:
-    """The extent ``[L, R]`` (cell coordinates: cell ``k`` spans ``[k - 1/2, k + 1/2]``) of each
-    run of cells in range (in contact or with ``g < η``), its tips ``g = η`` placed by linear
-    interpolation between the last centre in range and the first out of it."""
-    g = np.asarray(gap, dtype=float)
-    inside = np.asarray(contact, bool) | (g < law.opening)
-    n = g.size
-    if inside.all():
-        return [(-0.5, n - 0.5)]
-    out = []
-    for first, last in _runs(inside):
-        ends = []
-        for a, b in ((first, first - 1), (last, last + 1)):
-            rise = g[b % n] - g[a % n]
-            t = (law.opening - g[a % n]) / rise if rise > 0 else 0.5
-            ends.append(a + (b - a) * min(max(t, 0.0), 1.0))
-        out.append((ends[0], ends[1]))
-    return out
-
-
-def tip_weights(extents, points: int) -> np.ndarray:
-    """The share of each cell under the cohesive stress for runs of extents ``[L, R]``
-    (:func:`tip_positions`): the cells within a run wholly, the cell that holds a tip in
-    proportion to its part inside (a tip quantised to whole cells moves the load by up to
-    ``σ̃0 h`` per tip, a first-order error that, on a slow solid, drowns its small friction)."""
-    w = np.zeros(points)
-    for lo, hi in extents:
-        if hi - lo >= points:
-            return np.ones(points)
-        k = np.arange(int(np.floor(lo + 0.5)), int(np.floor(hi + 0.5)) + 1)
-        share = np.clip(np.minimum(k + 0.5, hi) - np.maximum(k - 0.5, lo), 0.0, 1.0)
-        np.add.at(w, k % points, share)
-    return np.minimum(w, 1.0)
 
 
 def law_violation(pressure, gap, contact, weights, law: GridLaw) -> float:
@@ -177,74 +132,148 @@ class CohesiveSolution:
     sets: int
 
 
-def _matches(old, new, points: int) -> bool:
-    """Whether two lists of run extents describe the same runs (same count, each new run
-    overlapping its old one): the tips can then be moved by secants."""
-    if len(old) != len(new):
-        return False
-    for (a, b), (c, d) in zip(old, new):
-        if b - a >= points or d - c >= points or d < a or c > b:
+class _TipIteration:
+    """The state of :func:`cohesive_solve`: the cell pressure, penetration, gaps and contact
+    of the last inner solve, the tips (run extents per row) of the next one, and the counts.
+
+    :meth:`solve` runs the inner adhesionless solve for the current tips, :meth:`settled`
+    moves the tips (and says whether they are found), :meth:`result` is the outcome.
+    """
+
+    def __init__(self, circulant, heights, law: GridLaw, *, mean_pressure, penetration, start,
+                 start_penetration, start_contact, options: dict, rows: int,
+                 contact_start: bool):
+        self.circulant, self.law, self.options = circulant, law, options
+        self.mean_pressure, self.penetration = mean_pressure, penetration
+        self.start_penetration, self.contact_start = start_penetration, contact_start
+        self.lam = circulant.eigenvalues
+        self.r = r = np.asarray(heights, dtype=float)
+        self.rows, self.width = rows, r.size // rows
+        self.load = load = mean_pressure is not None
+        workers = options["workers"]
+        self.p = p = np.asarray(start, dtype=float).copy()
+        u = convolve(p, self.lam, workers)
+        if not load:
+            delta = float(penetration)
+        elif start_penetration is None:
+            delta = 1.0 + float(np.mean((u - r)[p > 0])) if np.any(p > 0) else 0.0
+        else:
+            delta = float(start_penetration)
+        self.delta = delta
+        self.g = u - (r - 1.0 + delta)
+        if start_contact is None:
+            self.contact = p > 0.0
+            self.extents = row_tips(self.g, self.contact, law, rows)
+        else:
+            self.contact = np.asarray(start_contact, bool)
+            self.extents = contact_extents(self.contact, self.width)
+        self.before: list | None = None  # the previous solve's extents and tip residuals, per row
+        self.loose = LOOSE_INNER
+        self.iterations = self.applications = 0
+        self.solution: GridSolution | None = None
+
+    def solve(self, k: int) -> GridSolution:
+        """Inner solve ``k`` (from 1): the adhesionless problem of the shifted pressure for the
+        current tips; the pressure, penetration, gaps and contact then are its."""
+        law, opts = self.law, self.options
+        self.w = w = np.concatenate([tip_weights(e, self.width) for e in self.extents])
+        shifted = ranged_heights(self.r, w, law, self.lam, opts["workers"])
+        q0 = np.maximum(self.p + law.strength * w, 0.0)
+        if self.contact_start:
+            q0[~self.contact] = 0.0       # a cell new to a zone is cohesive, not in contact
+        if not q0.any():
+            q0[int(np.argmax(shifted))] = 1.0
+        control: dict[str, Any] = (
+            {"mean_pressure": float(self.mean_pressure) + law.strength * float(w.mean())}
+            if self.load else {"penetration": float(self.penetration)})
+        tolerance = opts["tolerance"]
+        self.inner = inner = tolerance if not self.contact_start else max(tolerance, self.loose)
+        options = dict(opts, start=q0, tolerance=inner,
+                       krylov_tolerance=max(opts["krylov_tolerance"], 0.1 * inner), **control)
+        counts = self._inner_solves(k, shifted, options)
+        sol = self.solution = counts[-1]
+        self.iterations += sum(c.iterations for c in counts)
+        self.applications += sum(c.applications for c in counts)
+        q, self.delta = sol.pressure, float(sol.penetration)
+        self.p = q - law.strength * w
+        self.g = convolve(self.p, self.lam, opts["workers"]) - (self.r - 1.0 + self.delta)
+        self.contact = q > 0.0
+        return sol
+
+    def _inner_solves(self, k: int, shifted, options: dict) -> list[GridSolution]:
+        """The grid solves of inner solve ``k``, the last one the answer (a contact-free answer
+        takes none and counts nothing)."""
+        circulant, counts = self.circulant, []
+        sol = None
+        if not self.load and np.max(shifted) - 1.0 + float(self.penetration) <= 0.0:
+            # no cell reaches the plane under the cohesive stress (tension without contact):
+            # q = 0 is the solution
+            sol = GridSolution(pressure=np.zeros(shifted.size),
+                               penetration=float(self.penetration), converged=True,
+                               residual=0.0, iterations=0, applications=0, solver="none",
+                               message="no contact")
+        elif (k > 1 or circulant.symmetric or self.contact_start
+              or self.start_penetration is not None):
+            # from the last solution (the tips moved a little), or from a start with its
+            # penetration, a nearby state (the approach's last step, a coarser grid's): on a
+            # λ = 5 sinusoid at ζ = 1, Δ̃ = 0.5 the presolve's start failed at 4096 cells
+            # where this one converges
+            sol = grid_solve(circulant, shifted,
+                             start_penetration=self.delta if self.load else None, **options)
+            counts.append(sol)
+        if sol is None or not (sol.converged or circulant.symmetric or sol.solver == "none"):
+            # a start far from the solution (the adhesionless contact, a coarser grid's carried
+            # over): the active set then needs damped steps by the dozen (on a sinusoid at
+            # ζ = 1e-2 it failed in 100), so it starts from the solution for the operator's
+            # symmetric part, as on the spectral method's first grid
+            sol = grid_solve(circulant, shifted, presolve=True, **options)
+            counts.append(sol)
+        return counts if counts else [sol]
+
+    def settled(self) -> bool:
+        """Whether the tips are found (the runs the same, every tip's residual within
+        ``10·tolerance``, the last inner solve at the tolerance); if not, the next tips: where
+        the gap crosses η in a row whose runs changed, else by secants (:func:`moved_tips`)."""
+        width, law = self.width, self.law
+        fresh = row_tips(self.g, self.contact, law, self.rows)
+        same = [same_runs(old, new, width) or (whole_row(old, width) and whole_row(new, width))
+                for old, new in zip(self.extents, fresh)]
+        if not any(same):
+            self.extents, self.before = fresh, None     # the runs changed: start the tips again
             return False
-    return True
+        rows_g = np.asarray(self.g).reshape(self.rows, width)
+        residuals = tip_residuals(rows_g, self.extents, same, law, width)
+        worst = max((abs(v) for row in residuals if row is not None for pair in row for v in pair),
+                    default=0.0)
+        tolerance = self.options["tolerance"]
+        if all(same) and worst <= 10.0 * tolerance and self.inner == tolerance:
+            return True
+        # inexact inner solves while the tips move: a hundredth of their largest residual
+        self.loose = 1e-2 * worst if all(same) else LOOSE_INNER
+        before = self.before
+        moved_rows = [fr if not res else
+                      moved_tips(ext, res, fr, gr, None if before is None else before[i])
+                      for i, (ext, res, fr, gr) in enumerate(zip(self.extents, residuals, fresh,
+                                                                  rows_g))]
+        self.before = [None if res is None else list(zip(ext, res))
+                       for ext, res in zip(self.extents, residuals)]
+        self.extents = moved_rows
+        return False
 
-
-def _secant(position, residual, before, slope_hint):
-    """The next position of one tip from its last two residuals (``before``: the previous
-    ``(position, residual)``), or None when they give no usable slope (same position, or a
-    slope against the gap's own or far flatter than a twentieth of it). Two residuals of
-    opposite signs bracket the tip: the secant then interpolates between them, whatever its
-    slope."""
-    if before is None or position == before[0]:
-        return None
-    slope = (residual - before[1]) / (position - before[0])
-    if residual * before[1] < 0.0:
-        return position - residual / slope
-    if not slope * slope_hint > 0 or abs(slope) < 0.05 * abs(slope_hint):
-        return None
-    return position - residual / slope
-
-
-def _tip_step(position, residual, before, fresh, slope_hint):
-    """The next position of one tip: the secant (:func:`_secant`), else, when the fixed point
-    ``fresh`` (where the gap crosses η) moves on in the direction of the last move but by less
-    than twice it, twice the last move (a zone that grows under its own stress, the jump of a
-    snap, or a soft zone whose fixed point creeps: the moves double until the residual changes
-    sign, and the secant then interpolates), else ``fresh``."""
-    moved = _secant(position, residual, before, slope_hint)
-    if moved is not None:
-        return moved
-    if before is None:
-        return fresh
-    last, ahead = position - before[0], fresh - position
-    if last * ahead > 0.0 and abs(ahead) < 2.0 * abs(last):
-        return position + 2.0 * last
-    return fresh
-
-
-def _row_tips(gap, contact, law: GridLaw, rows: int) -> list:
-    """:func:`tip_positions` of every row (cells flat, row by row)."""
-    g = np.asarray(gap).reshape(rows, -1)
-    c = np.asarray(contact).reshape(rows, -1)
-    return [tip_positions(gr, cr, law) for gr, cr in zip(g, c)]
-
-
-def _whole(extents, points: int) -> bool:
-    """Whether a row is in range from end to end (one run over every cell: no tips)."""
-    return len(extents) == 1 and extents[0][1] - extents[0][0] >= points
-
-
-def _moved(extents, residuals, fresh, gap, before):
-    """The next tips of one row: each by the secant of its last two residuals (``before``: the
-    previous extents and residuals of the row), else where the gap crosses η (``fresh``)."""
-    moved = []
-    for j, ((lo, hi), (r_lo, r_hi), (f_lo, f_hi)) in enumerate(zip(extents, residuals, fresh)):
-        old = None if before is None else before[j]
-        new_lo = _tip_step(lo, r_lo, None if old is None else (old[0][0], old[1][0]), f_lo,
-                           _interp(gap, lo + 0.5) - _interp(gap, lo - 0.5))
-        new_hi = _tip_step(hi, r_hi, None if old is None else (old[0][1], old[1][1]), f_hi,
-                           _interp(gap, hi + 0.5) - _interp(gap, hi - 0.5))
-        moved.append((new_lo, new_hi))
-    return moved
+    def result(self, sets: int, converged: bool, message: str) -> CohesiveSolution:
+        """The outcome after ``sets`` inner solves."""
+        p, g, contact, w, sol = self.p, self.g, self.contact, self.w, self.solution
+        res = law_violation(p, g, contact, w, self.law)
+        if converged:
+            message = (f"converged: {int(contact.sum())} contact and "
+                       f"{int(np.sum((w > 0) & ~contact))} cohesive cells after {sets} inner "
+                       "solves")
+        out = GridSolution(pressure=p, penetration=self.delta, converged=converged,
+                           residual=res, iterations=self.iterations,
+                           applications=self.applications,
+                           solver="cohesive " + (sol.solver if sol is not None else "grid"),
+                           message=message)
+        return CohesiveSolution(solution=out, contact=contact, weights=w, gap=g, sets=sets)
 
 
 def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, penetration=None,
@@ -303,118 +332,20 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
                          start_penetration=start_penetration, tolerance=tolerance,
                          krylov_tolerance=krylov_tolerance, max_updates=max_updates,
                          max_iterations=max_iterations, max_sets=max_sets, workers=workers)
-    lam = circulant.eigenvalues
-    r = np.asarray(heights, dtype=float)
-    n = r.size
-    width = n // rows
-
-    def by_row(values):
-        return np.asarray(values).reshape(rows, width)
-
-    load = mean_pressure is not None
-    p = np.asarray(start, dtype=float).copy()
-    u = convolve(p, lam, workers)
-    if not load:
-        delta = float(penetration)
-    elif start_penetration is None:
-        delta = 1.0 + float(np.mean((u - r)[p > 0])) if np.any(p > 0) else 0.0
-    else:
-        delta = float(start_penetration)
-    g = u - (r - 1.0 + delta)
-    if start_contact is None:
-        contact = p > 0.0
-        extents = _row_tips(g, contact, law, rows)
-    else:
-        contact = np.asarray(start_contact, bool)
-        extents = [[(-0.5, width - 0.5)] if c.all() else
-                   [(first - 0.5, last + 0.5) for first, last in _runs(c)]
-                   for c in by_row(contact)]
-    before: list | None = None    # the previous solve's extents and tip residuals, per row
-    loose = LOOSE_INNER
-    iterations = applications = 0
-    sol: GridSolution | None = None
+    options = dict(tolerance=tolerance, krylov_tolerance=krylov_tolerance,
+                   max_updates=max_updates, max_iterations=max_iterations, workers=workers)
+    tips = _TipIteration(circulant, heights, law, mean_pressure=mean_pressure,
+                         penetration=penetration, start=start,
+                         start_penetration=start_penetration, start_contact=start_contact,
+                         options=options, rows=rows, contact_start=contact_start)
     converged = False
     message = f"the cohesive tips did not settle in {max_sets} solves"
     for k in range(1, max_sets + 1):
-        w = np.concatenate([tip_weights(e, width) for e in extents])
-        shifted = ranged_heights(r, w, law, lam, workers)
-        q0 = np.maximum(p + law.strength * w, 0.0)
-        if contact_start:
-            q0[~contact] = 0.0            # a cell new to a zone is cohesive, not in contact
-        if not q0.any():
-            q0[int(np.argmax(shifted))] = 1.0
-        control: dict[str, Any] = (
-            {"mean_pressure": float(mean_pressure) + law.strength * float(w.mean())} if load
-            else {"penetration": float(penetration)})
-        inner = tolerance if not contact_start else max(tolerance, loose)
-        options = dict(start=q0, tolerance=inner,
-                       krylov_tolerance=max(krylov_tolerance, 0.1 * inner),
-                       max_updates=max_updates, max_iterations=max_iterations, workers=workers,
-                       **control)
-        counts = []
-        sol = None
-        if not load and np.max(shifted) - 1.0 + float(penetration) <= 0.0:
-            # no cell reaches the plane under the cohesive stress (tension without contact):
-            # q = 0 is the solution
-            sol = GridSolution(pressure=np.zeros(n), penetration=float(penetration),
-                               converged=True, residual=0.0, iterations=0, applications=0,
-                               solver="none", message="no contact")
-        elif k > 1 or circulant.symmetric or contact_start or start_penetration is not None:
-            # from the last solution (the tips moved a little), or from a start with its
-            # penetration, a nearby state (the approach's last step, a coarser grid's): on a
-            # λ = 5 sinusoid at ζ = 1, Δ̃ = 0.5 the presolve's start failed at 4096 cells
-            # where this one converges
-            sol = grid_solve(circulant, shifted, start_penetration=delta if load else None,
-                             **options)
-            counts.append(sol)
-        if sol is None or not (sol.converged or circulant.symmetric or sol.solver == "none"):
-            # a start far from the solution (the adhesionless contact, a coarser grid's carried
-            # over): the active set then needs damped steps by the dozen (on a sinusoid at
-            # ζ = 1e-2 it failed in 100), so it starts from the solution for the operator's
-            # symmetric part, as on the spectral method's first grid
-            sol = grid_solve(circulant, shifted, presolve=True, **options)
-            counts.append(sol)
-        iterations += sum(c.iterations for c in counts)
-        applications += sum(c.applications for c in counts)
-        q, delta = sol.pressure, float(sol.penetration)
-        p = q - law.strength * w
-        g = convolve(p, lam, workers) - (r - 1.0 + delta)
-        contact = q > 0.0
+        sol = tips.solve(k)
         if not sol.converged:
             message = f"inner solve: {sol.message}"
             break
-        fresh = _row_tips(g, contact, law, rows)
-        same = [_matches(old, new, width) or (_whole(old, width) and _whole(new, width))
-                for old, new in zip(extents, fresh)]
-        if not any(same):
-            extents, before = fresh, None           # the runs changed: start the tips again
-            continue
-        rows_g = by_row(g)
-        # a row whose runs changed starts its tips again; the others move theirs by secants
-        residuals = [None if not ok else [] if _whole(ext, width) else
-                     [(_interp(gr, lo) - law.opening, _interp(gr, hi) - law.opening)
-                      for lo, hi in ext]
-                     for gr, ext, ok in zip(rows_g, extents, same)]
-        worst = max((abs(v) for row in residuals if row is not None for pair in row for v in pair),
-                    default=0.0)
-        if all(same) and worst <= 10.0 * tolerance and inner == tolerance:
+        if tips.settled():
             converged = True
             break
-        # inexact inner solves while the tips move: a hundredth of their largest residual
-        loose = 1e-2 * worst if all(same) else LOOSE_INNER
-        moved_rows = [fr if not res else
-                      _moved(ext, res, fr, gr, None if before is None else before[i])
-                      for i, (ext, res, fr, gr) in enumerate(zip(extents, residuals, fresh,
-                                                                  rows_g))]
-        before = [None if res is None else list(zip(ext, res))
-                  for ext, res in zip(extents, residuals)]
-        extents = moved_rows
-    res = law_violation(p, g, contact, w, law)
-    if converged:
-        message = (f"converged: {int(contact.sum())} contact and "
-                   f"{int(np.sum((w > 0) & ~contact))} cohesive cells after {k} inner solves")
-    out = GridSolution(pressure=p, penetration=delta, converged=converged, residual=res,
-                       iterations=iterations, applications=applications,
-                       solver="cohesive " + (sol.solver if sol is not None else "grid"),
-                       message=message)
-    return CohesiveSolution(solution=out, contact=contact, weights=w, gap=g, sets=k)
+    return tips.result(k, converged, message)

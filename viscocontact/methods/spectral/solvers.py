@@ -5,22 +5,25 @@ Both solve the discrete contact problem on one grid: pressures ``p_k >= 0``, gap
 given, the penetration ``Δ̃`` a multiplier) or penetration control (``Δ̃`` given). ``A`` is the
 circulant of :mod:`~viscocontact.methods.spectral.operator`.
 
-* :func:`polonsky_keer` — the constrained conjugate gradients of Polonsky & Keer (1999) on the
-  complementary energy ``½ pᵀAp - pᵀ(r̃ - 1 + Δ̃)``, in load control with the gradient projected to
-  zero mean over the loaded cells and the load restored after every step, in penetration control
-  without either. ``A`` must be symmetric (an elastic kernel, or ζ at a limit). The search
-  directions are preconditioned by the inverse circulant on the loaded cells (Vollebregt 2014):
-  from the previous grid's solution 15-25 steps instead of 100-200 (8192 cells, the thesis's
-  rough profile), restarted whenever the loaded set changes.
-* :func:`active_set` — primal-dual active set (a semismooth Newton method, Hintermüller, Ito &
-  Kunisch 2002): on the active set ``C`` the gap vanishes, off it the pressure does. Each step
-  solves ``A_CC p_C = r̃_C - 1 + Δ̃`` (with the load row ``mean(p) = p̃∞`` in load control) by
-  GMRES (:mod:`~viscocontact.methods.spectral.krylov`) on FFT products, right-preconditioned by
-  the inverse circulant restricted to ``C`` (Vollebregt 2014), the load row eliminated in the
+* :func:`polonsky_keer` (:mod:`~viscocontact.methods.spectral.conjugate_gradients`) — the
+  constrained conjugate gradients of Polonsky & Keer (1999) on the complementary energy
+  ``½ pᵀAp - pᵀ(r̃ - 1 + Δ̃)``, in load control with the gradient projected to zero mean over the
+  loaded cells and the load restored after every step, in penetration control without either.
+  ``A`` must be symmetric (an elastic kernel, or ζ at a limit). The search directions are
+  preconditioned by the inverse circulant on the loaded cells (Vollebregt 2014): from the
+  previous grid's solution 15-25 steps instead of 100-200 (8192 cells, the thesis's rough
+  profile), restarted whenever the loaded set changes.
+* :func:`active_set` (:mod:`~viscocontact.methods.spectral.primal_dual`) — primal-dual active
+  set (a semismooth Newton method, Hintermüller, Ito & Kunisch 2002): on the active set ``C``
+  the gap vanishes, off it the pressure does. Each step solves ``A_CC p_C = r̃_C - 1 + Δ̃`` (with
+  the load row ``mean(p) = p̃∞`` in load control) by GMRES
+  (:mod:`~viscocontact.methods.spectral.krylov`) on FFT products, right-preconditioned by the
+  inverse circulant restricted to ``C`` (Vollebregt 2014), the load row eliminated in the
   preconditioner through ``M 1``; loosely while the set changes, tightly once it does not
   (inexact Newton). After :data:`UNDAMPED_STEPS` steps, or a cycle of sets, the steps are
   damped by a line search on ``|min(p, c g)|²``: the plain update cycles on strongly
   non-symmetric operators. Any ``A``: the viscoelastic operator is not symmetric.
+* :func:`grid_solve` — the one a grid's operator needs.
 
 Both stop on the largest violation of the contact conditions, ``max(max_C |g|, max_{∉C} -g)``,
 in units of the profile amplitude (the heights are normalised to 1), with ``p >= 0``.
@@ -47,333 +50,20 @@ doi:10.1016/j.jcp.2013.10.005
 from __future__ import annotations
 
 import attrs
-import numpy as np
 
-from ...deadline import check as check_deadline
-from .krylov import gmres
-from .operator import convolve, invert
+from .conjugate_gradients import FLAT, POLONSKY_KEER, polonsky_keer
+from .grid_solution import GridSolution, circulant_diagonal, violation
+from .operator import invert
+from .primal_dual import (ACTIVE_SET, LINE_SEARCH_SMALLEST, LOOSE_KRYLOV, UNDAMPED_STEPS,
+                          active_set)
 
-POLONSKY_KEER = "Polonsky-Keer"
-#: Relative tolerance of the Krylov solves of the active-set method while the set still changes.
-LOOSE_KRYLOV = 1e-2
-#: Smallest fraction of an active-set step the line search tries, and the number of full steps
-#: before the line search is switched on (three to six settle a set from a nearby start).
-LINE_SEARCH_SMALLEST = 1.0 / 1024
-UNDAMPED_STEPS = 10
+__all__ = ["GridSolution", "violation", "circulant_diagonal", "polonsky_keer", "active_set",
+           "grid_solve", "POLONSKY_KEER", "ACTIVE_SET", "FLAT", "LOOSE_KRYLOV",
+           "LINE_SEARCH_SMALLEST", "UNDAMPED_STEPS", "PRESOLVE"]
+
 #: Tolerance of the Polonsky-Keer solve for the operator's symmetric part that starts an active
 #: set from far (:func:`grid_solve`).
 PRESOLVE = 1e-6
-#: A search direction ``t`` with ``tᵀAt <= FLAT·|t|²·max|Λ|`` has no stiffness.
-FLAT = 1e-12
-ACTIVE_SET = "active set"
-
-
-@attrs.frozen(kw_only=True, eq=False)
-class GridSolution:
-    """The outcome of one grid solve.
-
-    Attributes
-    ----------
-    pressure : ndarray
-        Cell pressures ``p_k >= 0``.
-    penetration : float
-        ``Δ̃`` (given, or the load multiplier).
-    converged : bool
-    residual : float
-        Largest violation of the contact conditions (units of the profile amplitude).
-    iterations : int
-        Conjugate-gradient steps, or active-set updates.
-    applications : int
-        Products with ``A`` or its inverse (one FFT pair each).
-    solver : str
-        :data:`POLONSKY_KEER` or :data:`ACTIVE_SET`.
-    message : str
-    """
-
-    pressure: np.ndarray
-    penetration: float
-    converged: bool
-    residual: float
-    iterations: int
-    applications: int
-    solver: str
-    message: str
-
-
-def violation(gap: np.ndarray, loaded: np.ndarray) -> float:
-    """``max(max_C |g|, max_{∉C} -g, 0)``: the largest violation of the contact conditions."""
-    inside = np.max(np.abs(gap[loaded]), initial=0.0)
-    outside = -np.min(gap[~loaded], initial=0.0)
-    return float(max(inside, outside, 0.0))
-
-
-def circulant_diagonal(spectrum) -> float:
-    """The diagonal entry of a real symmetric circulant from its rfft (or rfft2) eigenvalues
-    (their mean over all modes; the last axis holds the half spectrum)."""
-    v = np.asarray(spectrum).real
-    n = 2 * (v.shape[-1] - 1) * int(np.prod(v.shape[:-1]))
-    return float((v[..., 0].sum() + 2.0 * v[..., 1:-1].sum() + v[..., -1].sum()) / n)
-
-
-def polonsky_keer(eigenvalues, heights, *, mean_pressure=None, penetration=None, start=None,
-                  tolerance: float = 1e-10, max_iterations: int = 5000, preconditioner=None,
-                  workers: int = 1) -> GridSolution:
-    """Polonsky-Keer constrained conjugate gradients (symmetric operator).
-
-    Parameters
-    ----------
-    eigenvalues : ndarray
-        ``Λ_n`` of a symmetric circulant (imaginary parts are ignored).
-    heights : ndarray
-        ``r̃`` at the cell centres.
-    mean_pressure, penetration : float
-        Exactly one: ``p̃∞ > 0`` (load control) or ``Δ̃`` (penetration control).
-    start : ndarray, optional
-        Starting pressure (clipped at zero; rescaled to the load in load control). Default: the
-        uniform load, or the positive part of the interference in penetration control.
-    tolerance : float
-        Largest violation of the contact conditions to stop at (units of the amplitude).
-    preconditioner : ndarray, optional
-        Eigenvalues of a symmetric positive definite circulant ``M ≈ A⁻¹`` (the inverse
-        circulant): the search directions are built from ``M g`` restricted to the loaded cells
-        (Vollebregt 2014) instead of the gradient ``g``.
-    """
-    lam = np.asarray(eigenvalues).real.astype(complex)
-    pre = None if preconditioner is None else np.asarray(preconditioner).real.astype(complex)
-    # with a preconditioner (steps τ ~ 1), a cell that starts to carry load takes the pressure
-    # that would close its gap alone: -τ g/A_kk
-    diagonal = 1.0 if pre is None else 1.0 / circulant_diagonal(lam)
-    r = np.asarray(heights, dtype=float)
-    load = mean_pressure is not None
-    w = r - 1.0 if load else r - 1.0 + float(penetration)
-    if start is None:
-        p = np.full(r.size, float(mean_pressure)) if load else np.maximum(w, 0.0)
-    else:
-        p = np.maximum(np.asarray(start, dtype=float), 0.0)
-    if not p.any():
-        p[int(np.argmax(w))] = 1.0
-    if load:
-        p *= mean_pressure / p.mean()
-    t = np.zeros_like(p)
-    scale = float(np.max(np.abs(lam)))
-    g_old, conjugate, shift, res = 1.0, 0.0, 0.0, np.inf
-    apps = 0
-    it = 0
-    message = f"no convergence in {max_iterations} iterations"
-    for it in range(max_iterations + 1):
-        check_deadline()                  # the cooperative time limit (viscocontact.deadline)
-        s = p > 0
-        g = convolve(p, lam, workers) - w
-        apps += 1
-        if load:
-            shift = float(np.mean(g[s]))
-            g -= shift
-        res = violation(g, s)
-        if res <= tolerance:
-            message = f"converged in {it} iterations"
-            break
-        if it == max_iterations:
-            break
-        gs = g[s]
-        if pre is None:
-            z = g
-        else:
-            z = convolve(np.where(s, g, 0.0), pre, workers)
-            apps += 1
-            if load:
-                z -= np.mean(z[s])
-        big_g = float(gs @ z[s])
-        beta = conjugate * big_g / g_old if g_old > 0.0 else 0.0
-        t = np.where(s, z + beta * t, 0.0)
-        g_old = big_g
-        q = convolve(t, lam, workers)
-        apps += 1
-        if load:
-            q -= np.mean(q[s])
-        denom = float(q[s] @ t[s])
-        slope = float(gs @ t[s])
-        if not denom > FLAT * float(t[s] @ t[s]) * scale and slope > 0.0 and np.any(t[s] > 0):
-            # a direction without stiffness (the mean mode of an incompressible solid, with
-            # every cell loaded under a given penetration): the energy falls linearly along
-            # it, so go to the first cell it unloads
-            move = s & (t > 0)
-            p = np.maximum(p - float(np.min(p[move] / t[move])) * t, 0.0)
-            conjugate = 0.0
-            continue
-        if not denom > 0.0:
-            # no descent within the loaded cells (none left, or a single one under load
-            # control): load the interpenetrating cells by their own stiffness and restart
-            outside = ~s & (g < 0.0)
-            if not outside.any():
-                message = f"search direction lost after {it} iterations"
-                break
-            p[outside] = -g[outside] / circulant_diagonal(lam)
-            if load:
-                p *= mean_pressure / p.mean()
-            conjugate = 0.0
-            continue
-        tau = float(gs @ t[s]) / denom
-        p = np.maximum(p - tau * t, 0.0)
-        overlap = (p == 0.0) & (g < 0.0)
-        if overlap.any():
-            p[overlap] -= tau * diagonal * g[overlap]
-        # a new loaded set restarts the conjugate directions: always when cells start to carry
-        # load (Polonsky-Keer), and with a preconditioner also when cells stop carrying it
-        changed = overlap.any() or (pre is not None and bool(np.any(s & (p == 0.0))))
-        conjugate = 0.0 if changed else 1.0
-        if load:
-            p *= mean_pressure / p.mean()
-    converged = res <= tolerance
-    delta = shift if load else float(penetration)
-    return GridSolution(pressure=p, penetration=delta, converged=converged, residual=res,
-                        iterations=it, applications=apps, solver=POLONSKY_KEER, message=message)
-
-
-def active_set(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
-               start_penetration: float | None = None, tolerance: float = 1e-10,
-               krylov_tolerance: float = 1e-10, max_iterations: int = 100, restart: int = 60,
-               workers: int = 1) -> GridSolution:
-    """Primal-dual active set (semismooth Newton) with preconditioned GMRES (any operator).
-
-    Each step takes the active set ``C = {p - c g > 0}`` (``c = 1/A_kk``, the pressure a unit
-    gap is worth) and solves the Newton system on it (:func:`_restricted_solve`): the gap
-    vanishes on ``C``, the pressure off it. The step to that solution is taken whole when it
-    reduces the merit ``|min(p, c g)|²`` and halved until it does otherwise (Armijo): a full step
-    is the plain primal-dual active-set update, which can cycle on a strongly non-symmetric
-    operator (a large ``β`` at ``ζ`` of order one), the damped one does not. The Krylov solves
-    are loose (:data:`LOOSE_KRYLOV` of their starting residual) while the set changes, tight
-    on a set that a full step kept (the found set: its first solve is the tight one), to half
-    the contact tolerance or ``krylov_tolerance``, whichever is looser. Converged when
-    ``p >= 0`` and the contact conditions hold to ``tolerance``.
-
-    Parameters
-    ----------
-    circulant : Circulant
-        Its ``eigenvalues`` and ``inverse``.
-    heights : ndarray
-        ``r̃`` at the cell centres.
-    mean_pressure, penetration : float
-        Exactly one (load or penetration control).
-    start : ndarray
-        Starting pressure.
-    start_penetration : float, optional
-        Starting ``Δ̃`` in load control (default: from the gaps of ``start``).
-    tolerance : float
-        Largest violation of the contact conditions (units of the amplitude).
-    krylov_tolerance : float
-        Relative tolerance of the tight GMRES solves.
-    """
-    lam = circulant.eigenvalues
-    inv = circulant.inverse
-    if np.ndim(inv) == 2:
-        # on a 2D grid the preconditioner runs in single precision (half the cost of its
-        # transforms): GMRES keeps the preconditioned directions (flexible GMRES), so its
-        # residual is that of the double-precision operator whatever the preconditioner's
-        # round-off (1e-7); the steps are those of the double-precision one
-        inv = inv.astype(np.complex64)
-    r = np.asarray(heights, dtype=float)
-    n = r.size
-    load = mean_pressure is not None
-    apps = [0]
-
-    def apply(v, spectrum=lam):
-        apps[0] += 1
-        return convolve(v, spectrum, workers)
-
-    stiffness = 1.0 / circulant_diagonal(lam.real)     # pressure that a unit gap is worth
-    singular_when_closed = not load and lam.flat[0] == 0
-    p = np.maximum(np.asarray(start, dtype=float), 0.0)
-    if not p.any():
-        p[int(np.argmax(r))] = 1.0
-    if load:
-        p *= mean_pressure / p.mean()
-    u = apply(p)
-    if not load:
-        delta = float(penetration)
-    elif start_penetration is None:
-        delta = 1.0 + float(np.mean((u - r)[p > 0]))
-    else:
-        delta = float(start_penetration)
-    g = u - (r - 1.0 + delta)
-
-    def merit(pressure, gap):
-        m = np.minimum(pressure, stiffness * gap)
-        return float(m @ m)
-
-    loose = LOOSE_KRYLOV if LOOSE_KRYLOV > krylov_tolerance else None
-    tight = krylov_tolerance
-    damped = False
-    floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
-    previous: np.ndarray | None = None
-    full_step = False
-    seen: set[bytes] = set()
-    res = np.inf
-    for it in range(1, max_iterations + 1):
-        check_deadline()                  # the cooperative time limit (viscocontact.deadline)
-        # the first set is the start's loaded cells (a warm start gives a set, not a solution)
-        active = p > 0 if it == 1 else p - stiffness * g > 0
-        if not active.any():
-            active[int(np.argmax(r))] = True
-        if singular_when_closed and active.all():
-            # A without its mean mode (c0 = 0) is singular on the whole grid, and under a given
-            # penetration below closure some cell has a gap: keep the least loaded one out
-            active[int(np.argmin(p - stiffness * g))] = False
-        key = active.tobytes()
-        if it > UNDAMPED_STEPS and not damped:       # slow to settle: damp the steps
-            damped, loose = True, None
-        if key in seen and not (previous is not None and np.array_equal(active, previous)):
-            if loose is not None:                    # a cycle of inexact steps: tighten them
-                loose = None
-            else:                                    # a cycle of Newton steps: damp them
-                damped = True
-            seen.clear()
-        seen.add(key)
-        if (loose is not None and full_step and previous is not None
-                and np.array_equal(active, previous)):
-            loose = None                  # the last full step kept the set: it is found
-        idx = np.flatnonzero(active)
-        sol, info, product = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, n,
-                                               loose, (tight, 0.5 * tolerance), restart)
-        target = np.zeros(n)
-        target[idx] = sol[:idx.size]
-        step_p = target - p
-        step_d = float(sol[idx.size]) - delta if load else 0.0
-        # A·target is GMRES's last product: the step of the gaps without another one
-        step_g = product - (g + (r - 1.0 + delta)) - step_d
-        s = 1.0
-        if damped:
-            before = merit(p, g)
-            while s > LINE_SEARCH_SMALLEST:
-                after = merit(p + s * step_p, g + s * step_g)
-                if after <= (1.0 - 1e-4 * s) * before or after <= floor:
-                    break
-                s *= 0.5
-        p = p + s * step_p
-        g = g + s * step_g
-        delta += s * step_d
-        res = violation(g, p > 0)
-        if (s == 1.0 and loose is None and previous is not None
-                and np.array_equal(active, previous) and res > tolerance and tight > 1e-15):
-            tight = max(1e-3 * tight, 1e-15)      # the Krylov solve falls short: tighten it
-        previous, full_step = active, s == 1.0
-        if loose is None and info == 0 and res <= tolerance and \
-                np.min(p) >= -tolerance * stiffness:
-            p = np.maximum(p, 0.0)
-            if load:
-                p *= mean_pressure / p.mean()    # the load row to round-off, not to GMRES's
-            g = apply(p) - (r - 1.0 + delta)
-            res = violation(g, p > 0)
-            if res <= 2.0 * tolerance:
-                how = ", damped" if damped else ""
-                return GridSolution(pressure=p, penetration=delta, converged=True, residual=res,
-                                    iterations=it, applications=apps[0], solver=ACTIVE_SET,
-                                    message=f"converged in {it} active-set steps{how}")
-    p = np.maximum(p, 0.0)
-    g = apply(p) - (r - 1.0 + delta)
-    res = violation(g, p > 0)
-    return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
-                        iterations=max_iterations, applications=apps[0], solver=ACTIVE_SET,
-                        message=f"no convergence in {max_iterations} active-set steps")
 
 
 def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
@@ -404,61 +94,3 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
                      krylov_tolerance=krylov_tolerance, max_iterations=max_updates, **common)
     return attrs.evolve(sol, iterations=sol.iterations + its,
                         applications=sol.applications + apps)
-
-
-def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
-                      restart):
-    """GMRES on the active set ``idx``: ``A_CC p_C - Δ̃ 1 = r̃_C - 1`` with ``mean(p) = p̃∞``
-    (load control), or ``A_CC p_C = r̃_C - 1 + Δ̃``; returns ``([p_C, (Δ̃)], info, A p)`` with
-    ``A p`` the product of the solution on the whole grid (GMRES's last). ``tight`` is
-    ``(relative, absolute)``: the solve stops at the larger of ``loose`` times the start's
-    residual and the smaller of ``relative·|rhs|`` and ``absolute`` (half the contact
-    tolerance: the residual's entries are the gaps on ``C``), never below ``1e-15·|rhs|``."""
-    nc = idx.size
-    load = mean_pressure is not None
-    full = np.zeros(n)
-    last = [np.zeros(n)]
-
-    def restrict(v, spectrum=None):
-        full[:] = 0.0
-        full[idx] = v
-        if spectrum is not None:
-            return apply(full, spectrum)[idx]
-        last[0] = apply(full)
-        return last[0][idx]
-
-    if load:
-        ones_pre = restrict(np.ones(nc), inverse)       # M 1, for the load row
-        mean_ones = float(ones_pre.mean())
-        target = mean_pressure * n / nc                 # mean over C of p_C
-
-        def matvec(v):
-            out = np.empty(nc + 1)
-            out[:nc] = restrict(v[:nc]) - v[nc]
-            out[nc] = v[:nc].mean()
-            return out
-
-        def precondition(v):
-            y = restrict(v[:nc], inverse)
-            d = (v[nc] - y.mean()) / mean_ones
-            return np.append(y + d * ones_pre, d)
-
-        rhs = np.append(heights[idx] - 1.0, target)
-        x0 = np.append(p[idx], delta)
-    else:
-        def matvec(v):
-            return restrict(v)
-
-        def precondition(v):
-            return restrict(v, inverse)
-
-        rhs = heights[idx] - 1.0 + delta
-        x0 = p[idx]
-    # ``loose``: relative to the residual of the start (an inexact Newton step), never tighter
-    # than the tight bound
-    size = float(np.linalg.norm(rhs))
-    atol = max(min(tight[0] * size, tight[1]), 1e-15 * size)
-    if loose is not None:
-        atol = max(atol, loose * float(np.linalg.norm(rhs - matvec(x0))))
-    sol, converged, _ = gmres(matvec, precondition, rhs, x0, atol, restart=restart)
-    return sol, 0 if converged else 1, last[0]
