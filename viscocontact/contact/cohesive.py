@@ -564,36 +564,101 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
     numpy.linalg.LinAlgError
         When ``∂K̃/∂d`` is singular (the lengths do not follow the edges).
     """
-    mesh = fields.mesh
-    kernel = dfields.kernel
-    n_dirs = dfields.n_dirs
-    n = len(mesh.edges)
-    loads = fields.loads
-    if loads is None:
+    if fields.loads is None:
         raise ValueError("zone_derivatives: fields without zones (loads is None)")
     d = zone_widths(fields)
-    act = np.flatnonzero(d > 0)
-    m = act.size
-    sign = np.tile([-1.0, 1.0], n // 2)[act]      # a tip's motion per unit length of its zone
-    a, b = loads.left[act], loads.right[act]
-    c = tips(mesh.edges, d)[act]
-    E = np.zeros((m, n_dirs))                     # zone ends and tips move with their edges
-    E[np.arange(m), act] = 1.0
-
-    slopes = functools.partial(_kernel_slopes, kernel)
-    xi = mesh.mid
-    # the stresses: at fixed lengths in every direction (the zones move with their edges), then
-    # per unit length of each zone
-    moved = slopes(xi[:, None] - a[None, :]) - slopes(xi[:, None] - b[None, :])
-    u_dot = stress * (moved.sum(axis=1)[:, None] * dfields.colloc_vel - moved @ E)
-    sx = lu_solve(fields.lu, dfields.rhs - u_dot, check_finite=False)
-    sd = _growth_stresses(fields, kernel, stress, c)
+    z = _MovingZones.of(fields, dfields.n_dirs)
+    sx, sd = _zone_stress_derivatives(fields, dfields, stress, z)
     # stress-intensity factors
     W, explicit = dfields.fit_motion(BOUNDED_POWERS)
     kx, kd = W @ sx + explicit, W @ sd
-    # tip gaps: the stresses, then the elements under the moving tip, the zones, the profile
-    # (a filled neck's two zones meet tip to end, where the kernel's slope is logarithmic;
-    # their rows are not used and are cleared below)
+    gx, gd = _tip_gap_derivatives(fields, dfields, stress, z, sx, sd)
+    # the load (the zones' force σ̃0·Σd counts)
+    h = fields.mesh.width
+    px = -(dfields.width_vel.T @ fields.sigma + h @ sx) / (2 * np.pi)
+    pd = -(h @ sd + stress) / (2 * np.pi)
+    full, dd = _length_derivatives(fields.mesh.edges, d, z.act, dfields.n_dirs, kx, kd, gx, gd,
+                                   tip_weights)
+    n = len(fields.mesh.edges)
+    lengths = np.zeros((n, dfields.n_dirs))
+    lengths[z.act] = dd
+    # a filled neck has no tips: its zones' rows (where the meeting tips sit on each other's
+    # ends, the kernel's logarithmic slope) are not used
+    gx = np.where(full[:, None], 0.0, gx)
+    gd = np.where(full[:, None], 0.0, gd)
+    gaps = np.zeros((n, dfields.n_dirs))
+    gaps[z.act] = gx + gd @ dd
+    if not np.all(np.isfinite(gaps)):
+        raise np.linalg.LinAlgError("a zone tip sits on another zone's end")
+    return ZoneDerivatives(lengths=lengths, intensity=kx + kd @ dd, gaps=gaps,
+                           pressure=px + pd @ dd)
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class _MovingZones:
+    """The zones of a field that have a length, as :func:`zone_derivatives` moves them (``m``
+    zones, ``D`` directions).
+
+    Attributes
+    ----------
+    act : (m,) int array
+        Their edges.
+    sign : (m,)
+        A tip's motion per unit length of its zone: -1 at a left edge, +1 at a right one.
+    a, b : (m,)
+        Their ends, left and right.
+    c : (m,)
+        Their tips.
+    E : (m, D)
+        The motion of their ends and tips in every direction: with their own edges.
+    """
+
+    act: np.ndarray
+    sign: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    c: np.ndarray
+    E: np.ndarray
+
+    @classmethod
+    def of(cls, fields: FieldSolution, n_dirs: int) -> "_MovingZones":
+        """The zones of ``fields`` (with zones) for ``n_dirs`` directions."""
+        mesh, loads = fields.mesh, fields.loads
+        n = len(mesh.edges)
+        d = zone_widths(fields)
+        act = np.flatnonzero(d > 0)
+        m = act.size
+        E = np.zeros((m, n_dirs))                     # zone ends and tips move with their edges
+        E[np.arange(m), act] = 1.0
+        return cls(act=act, sign=np.tile([-1.0, 1.0], n // 2)[act], a=loads.left[act],
+                   b=loads.right[act], c=tips(mesh.edges, d)[act], E=E)
+
+
+def _zone_stress_derivatives(fields: FieldSolution, dfields, stress: float,
+                             z: _MovingZones) -> tuple[np.ndarray, np.ndarray]:
+    """``(σ̇_x, σ̇_d)``: the contact stresses' derivatives at fixed zone lengths in every
+    direction (the zones move with their edges: their loads' displacement at the collocation
+    points changes like an influence coefficient whose ends and point move), (N, D), and per
+    unit length of each zone (:func:`intensity_jacobian`), (N, m)."""
+    slopes = functools.partial(_kernel_slopes, dfields.kernel)
+    xi = fields.mesh.mid
+    moved = slopes(xi[:, None] - z.a[None, :]) - slopes(xi[:, None] - z.b[None, :])
+    u_dot = stress * (moved.sum(axis=1)[:, None] * dfields.colloc_vel - moved @ z.E)
+    sx = lu_solve(fields.lu, dfields.rhs - u_dot, check_finite=False)
+    sd = _growth_stresses(fields, dfields.kernel, stress, z.c)
+    return sx, sd
+
+
+def _tip_gap_derivatives(fields: FieldSolution, dfields, stress: float, z: _MovingZones,
+                         sx: np.ndarray, sd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(ġ_x, ġ_d)``: the tip gaps' derivatives in every direction at fixed zone lengths,
+    (m, D), and per unit length of each zone, (m, m), from the stresses' (``sx``, ``sd``,
+    :func:`_zone_stress_derivatives`): the stresses, then the elements under the moving tip,
+    the zones, the profile and the penetration. (A filled neck's two zones meet tip to end,
+    where the kernel's slope is logarithmic; their rows are not finite, and not used.)"""
+    mesh, kernel = fields.mesh, dfields.kernel
+    slopes = functools.partial(_kernel_slopes, kernel)
+    sign, a, b, c, E = z.sign, z.a, z.b, z.c, z.E
     with np.errstate(invalid="ignore", divide="ignore"):
         infl = kernel.influence(c, mesh.left, mesh.right)
         s = dfields.node_weights(fields.sigma)
@@ -602,7 +667,7 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
         gx = (infl @ sx + E * at_tip[:, None] - g_nodes @ (s[:, None] * dfields.node_vel))
         gd = infl @ sd + np.diag(sign * at_tip)
         # the zones seen from the moving tips (each zone's end at its own tip moves with it)
-        diag = np.arange(m)
+        diag = np.arange(len(c))
         zone_a = slopes(c[:, None] - a[None, :])
         zone_b = slopes(c[:, None] - b[None, :])
         zone_a[diag, diag] = np.where(sign < 0, 0.0, zone_a[diag, diag])
@@ -621,16 +686,23 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
     gx -= r_slope[:, None] * E
     gx[:, -1] -= 1.0
     gd -= np.diag(r_slope * sign)
-    # the load (the zones' force σ̃0·Σd counts)
-    h = mesh.width
-    px = -(dfields.width_vel.T @ fields.sigma + h @ sx) / (2 * np.pi)
-    pd = -(h @ sd + stress) / (2 * np.pi)
-    # the lengths: a zone of a filled neck keeps its share f of the neck (d = f·room, the room
-    # X_L - X_R between the neck's right edge R and left edge L), every other zone keeps K̃ = 0
-    full = filled(mesh.edges, d)[act]
-    dd = np.zeros((m, n_dirs))
+    return gx, gd
+
+
+def _length_derivatives(edges: np.ndarray, d: np.ndarray, act: np.ndarray, n_dirs: int,
+                        kx: np.ndarray, kd: np.ndarray, gx: np.ndarray, gd: np.ndarray,
+                        tip_weights: np.ndarray | None) -> tuple[np.ndarray, np.ndarray]:
+    """``(full, ḋ)`` of the zones ``act``: which fill their neck, and their lengths'
+    derivatives (m, D). A zone of a filled neck keeps its share ``f`` of the neck (``d =
+    f·room``, the room ``X_L - X_R`` between the neck's right edge R and left edge L); every
+    other zone keeps ``K̃ - W (g̃ - η) = 0`` (``W`` its ``tip_weights``, 0 without: ``K̃ = 0``;
+    :class:`TipCondition`), from the intensities' ``kx``, ``kd`` and the tip gaps' ``gx``,
+    ``gd`` derivatives at fixed lengths and per unit length."""
+    n = len(edges)
+    full = filled(edges, d)[act]
+    dd = np.zeros((act.size, n_dirs))
     if np.any(full):
-        space = room(mesh.edges)[act]
+        space = room(edges)[act]
         right, left = neck_ends(n)
         right, left = right[act], left[act]
         dd[full] = (d[act][full] / space[full])[:, None] * (
@@ -643,18 +715,7 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
         phi_d = kd[rows] - w[:, None] * gd[free]
         phi_x = kx[rows] - w[:, None] * gx[free]
         dd[free] = -np.linalg.solve(phi_d[:, free], phi_x + phi_d[:, full] @ dd[full])
-    lengths = np.zeros((n, n_dirs))
-    lengths[act] = dd
-    # a filled neck has no tips: its zones' rows (where the meeting tips sit on each other's
-    # ends, the kernel's logarithmic slope) are not used
-    gx = np.where(full[:, None], 0.0, gx)
-    gd = np.where(full[:, None], 0.0, gd)
-    gaps = np.zeros((n, n_dirs))
-    gaps[act] = gx + gd @ dd
-    if not np.all(np.isfinite(gaps)):
-        raise np.linalg.LinAlgError("a zone tip sits on another zone's end")
-    return ZoneDerivatives(lengths=lengths, intensity=kx + kd @ dd, gaps=gaps,
-                           pressure=px + pd @ dd)
+    return full, dd
 
 
 _MEET = ("no zone lengths bound the stress at these edges: the zones of neighbouring contacts "
