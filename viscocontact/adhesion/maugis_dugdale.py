@@ -57,7 +57,7 @@ GAP_MARGIN = 1e-3
 #: Weight of the free fraction of a neck in the residual of zones about to fill it
 #: (:meth:`MaugisDugdale.residuals`).
 SLACK = 10.0
-#: Points across a neck at which its gap is sampled (:meth:`MaugisDugdale._reclassified`).
+#: Points across a neck at which its gap is sampled (:func:`_reclassified_necks`).
 NECK_POINTS = 48
 #: Maugis's transition parameter λ above which a scene is JKR-like, below which DMT-like.
 JKR_LIKE, DMT_LIKE = 5.0, 0.1
@@ -157,8 +157,10 @@ class MaugisDugdale(AdhesionModel):
                 mesh.edges)[0::2]))))
         stress = self.strength(shape.amplitude)
 
+        eta = self.opening(shape.amplitude)
+
         def admissible(fields, necks):
-            return not np.any(self._reclassified(fields, kernel, shape, necks)[1])
+            return not np.any(_reclassified_necks(fields, kernel, shape, eta, necks)[1])
 
         tip = self.tip_condition(shape)
         try:
@@ -166,7 +168,7 @@ class MaugisDugdale(AdhesionModel):
                                  full=full, admissible=admissible, tip=tip)
             # open zones whose free interval between the tips has no gap beyond the range (and
             # none below the surface): the law acts across it, so the zones fill the neck
-            narrow = self._reclassified(fields, kernel, shape)[0]
+            narrow = _reclassified_necks(fields, kernel, shape, eta)[0]
             if np.any(narrow):
                 fields = zone_fields(base, kernel, stress=stress, control=control,
                                      start=zone_widths(fields),
@@ -234,51 +236,6 @@ class MaugisDugdale(AdhesionModel):
                           slack=1.0 - (d + d[partner(len(d))]) / room(edges),
                           full=filled(edges, d))
 
-    def _reclassified(self, fields, kernel, shape, necks=None) -> tuple[np.ndarray, np.ndarray]:
-        """``(narrow, wide)``: the edges of open necks whose gap stays between 0 and the range
-        between the tips (they fill), and of filled necks with a gap beyond the range (they
-        cannot be filled); of the edges ``necks`` only, when given.
-
-        The gap is sampled at :data:`NECK_POINTS` points across each neck; an open neck is
-        first tried at three (a neck much wider than the range exceeds it at once), all necks
-        in one evaluation of the displacement per stage."""
-        edges = fields.mesh.edges
-        n = len(edges)
-        d = np.asarray(fields.loads.width, dtype=float)
-        narrow, wide = np.zeros(n, bool), np.zeros(n, bool)
-        right = np.arange(1, n, 2)                  # each neck by its right edge
-        left = (right + 1) % n
-        if necks is not None:
-            necks = np.asarray(necks, bool)
-            keep = necks[right] | necks[left]
-            right, left = right[keep], left[keep]
-        full = filled(edges, d)[right]
-        lo = np.where(full, edges[right], tips(edges, d)[right])
-        width = np.where(full, room(edges)[right], room(edges)[right] - d[right] - d[left])
-        eta = self.opening(shape.amplitude)
-
-        def extremes(which, m):
-            """Largest and smallest gap at ``m`` points across the necks ``which``."""
-            x = (lo[which, None]
-                 + width[which, None] * (np.arange(1, m + 1) / (m + 1))[None, :]).ravel()
-            gap = (fields.displacement(kernel, x)
-                   - (shape.heights(x) - 1.0 + fields.penetration)).reshape(-1, m)
-            return gap.max(axis=1), gap.min(axis=1)
-
-        top, bottom = np.full(len(right), -np.inf), np.full(len(right), np.inf)
-        first = ~full
-        if np.any(first):
-            top[first], bottom[first] = extremes(first, 3)
-        rest = full | ((top < eta) & (bottom >= 0.0))
-        if np.any(rest):
-            t, b = extremes(rest, NECK_POINTS)
-            top[rest], bottom[rest] = np.maximum(top[rest], t), np.minimum(bottom[rest], b)
-        over = full & (top > eta)
-        within = ~full & (bottom >= 0.0) & (top < eta)   # (a penetrating profile: births)
-        wide[right[over]] = wide[left[over]] = True
-        narrow[right[within]] = narrow[left[within]] = True
-        return narrow, wide
-
     def residual_derivatives(self, ctx, dfields) -> np.ndarray | None:
         """The derivatives of :meth:`residuals` in every edge and the penetration along the
         zones' own equations (:func:`~viscocontact.contact.cohesive.zone_derivatives`): at a
@@ -291,7 +248,6 @@ class MaugisDugdale(AdhesionModel):
         if z is None:
             return None
         e = self._edge_state(ctx)
-        n = len(e.d)
         eta = self.opening(ctx.amplitude)
         root = np.sqrt(np.where(e.zone & (e.g > 0), e.g, 1.0))
         rate = np.where(e.zone & (e.g > 0), e.kc / (2 * root * eta), 0.0)
@@ -299,15 +255,8 @@ class MaugisDugdale(AdhesionModel):
                        np.where((e.k < 0)[:, None], z.intensity, 0.0))
         bound = e.zone & (-SLACK * e.kc * e.slack > e.tip)
         if np.any(bound):
-            # the room of each edge's neck, X_L - X_R, moves with its two edges
-            right, left = neck_ends(n)
-            unit = np.eye(out.shape[1])
-            d_room = unit[left] - unit[right]
-            facing = partner(n)
-            space = room(ctx.fields.mesh.edges)
-            d_slack = (-(z.lengths + z.lengths[facing]) / space[:, None]
-                       + ((e.d + e.d[facing]) / space**2)[:, None] * d_room)
-            out = np.where(bound[:, None], -SLACK * e.kc * d_slack, out)
+            out = np.where(bound[:, None], -SLACK * e.kc * _slack_derivatives(
+                ctx.fields.mesh.edges, e.d, z.lengths, out.shape[1]), out)
         return np.where(e.full[:, None], z.intensity, out)
 
     def pressure_derivatives(self, ctx, dfields) -> np.ndarray | None:
@@ -423,3 +372,76 @@ class _EdgeState:
     slack: np.ndarray
     full: np.ndarray
 
+
+def _slack_derivatives(edges: np.ndarray, d: np.ndarray, dd: np.ndarray,
+                       n_dirs: int) -> np.ndarray:
+    """The derivatives (n_edges, D) of every edge's free fraction of its neck,
+    ``s = 1 - (d_i + d_j)/W`` with the room ``W = X_L - X_R`` (:func:`~viscocontact.contact.
+    cohesive.room`), which moves with the neck's two edges: ``-(ḋ_i + ḋ_j)/W + (d_i + d_j)
+    Ẇ/W²``, from the zone lengths ``d`` and their derivatives ``dd`` (n_edges, D)."""
+    n = len(d)
+    right, left = neck_ends(n)
+    unit = np.eye(n_dirs)
+    d_room = unit[left] - unit[right]
+    facing = partner(n)
+    space = room(edges)
+    return (-(dd + dd[facing]) / space[:, None]
+            + ((d + d[facing]) / space**2)[:, None] * d_room)
+
+
+def _reclassified_necks(fields, kernel, shape, eta: float,
+                       necks: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """``(narrow, wide)``: the edges of open necks whose gap stays between 0 and the range
+    ``eta`` between the tips (they fill), and of filled necks with a gap beyond the range (they
+    cannot be filled); of the edges ``necks`` only, when given.
+
+    The gap is sampled at :data:`NECK_POINTS` points across each neck; an open neck is
+    first tried at three (a neck much wider than the range exceeds it at once), all necks
+    in one evaluation of the displacement per stage.
+
+    Parameters
+    ----------
+    fields : FieldSolution
+        A field with its zones (``loads``).
+    kernel : PreparedKernel
+    shape : NormalizedProfile
+    eta : float
+        ``η = h̃0/Λ̃`` (:meth:`MaugisDugdale.opening`).
+    necks : (n_edges,) bool array, optional
+        The edges whose necks to classify (every neck when None).
+    """
+    edges = fields.mesh.edges
+    n = len(edges)
+    d = np.asarray(fields.loads.width, dtype=float)
+    narrow, wide = np.zeros(n, bool), np.zeros(n, bool)
+    right = np.arange(1, n, 2)                  # each neck by its right edge
+    left = (right + 1) % n
+    if necks is not None:
+        necks = np.asarray(necks, bool)
+        keep = necks[right] | necks[left]
+        right, left = right[keep], left[keep]
+    full = filled(edges, d)[right]
+    lo = np.where(full, edges[right], tips(edges, d)[right])
+    width = np.where(full, room(edges)[right], room(edges)[right] - d[right] - d[left])
+
+    def extremes(which, m):
+        """Largest and smallest gap at ``m`` points across the necks ``which``."""
+        x = (lo[which, None]
+             + width[which, None] * (np.arange(1, m + 1) / (m + 1))[None, :]).ravel()
+        gap = (fields.displacement(kernel, x)
+               - (shape.heights(x) - 1.0 + fields.penetration)).reshape(-1, m)
+        return gap.max(axis=1), gap.min(axis=1)
+
+    top, bottom = np.full(len(right), -np.inf), np.full(len(right), np.inf)
+    first = ~full
+    if np.any(first):
+        top[first], bottom[first] = extremes(first, 3)
+    rest = full | ((top < eta) & (bottom >= 0.0))
+    if np.any(rest):
+        t, b = extremes(rest, NECK_POINTS)
+        top[rest], bottom[rest] = np.maximum(top[rest], t), np.minimum(bottom[rest], b)
+    over = full & (top > eta)
+    within = ~full & (bottom >= 0.0) & (top < eta)   # (a penetrating profile: births)
+    wide[right[over]] = wide[left[over]] = True
+    narrow[right[within]] = narrow[left[within]] = True
+    return narrow, wide

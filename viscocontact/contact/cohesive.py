@@ -347,90 +347,167 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
     :class:`~viscocontact.adhesion.MaugisDugdale`). Otherwise these edges have no zones
     (:class:`ZoneError`). Zones filled at the start (``full``) stay filled while admissible.
     """
-    edges = base.mesh.edges
-    n = len(edges)
-    space = room(edges)
-    free = ROOM * space
-    facing = partner(n)
-    weights = bounded_weights(base.mesh)
+    return _ZoneNewton(base, kernel, stress=stress, control=control, admissible=admissible,
+                       tip=tip).solve(start, full)
 
-    def evaluate(t):
+
+class _ZoneNewton:
+    """The Newton iteration of :func:`zone_fields` in ``t = √d`` on one contact set.
+
+    It holds the equations of the zones (:meth:`evaluate`), the filling of necks (:meth:`fill`,
+    :meth:`allowed`) and the iteration's state: the current ``t``, its field and equations'
+    values ``k``, the filled necks ``full``, the zones capped at their room in the last step,
+    the last residual size, the last positive ``√d`` of each zone, and the zones that have
+    screened their edge or whose necks were tried filled. :meth:`solve` runs it; each other
+    method is one kind of step.
+    """
+
+    def __init__(self, base: FieldSolution, kernel, *, stress: float, control: dict,
+                 admissible: Callable[[FieldSolution, np.ndarray], bool] | None,
+                 tip: TipCondition | None):
+        self.base, self.kernel, self.stress, self.control = base, kernel, stress, control
+        self.admissible, self.tip = admissible, tip
+        self.edges = edges = base.mesh.edges
+        self.n = len(edges)
+        self.space = room(edges)
+        self.free = ROOM * self.space
+        self.facing = partner(self.n)
+        self.weights = bounded_weights(base.mesh)
+        self.half = 0.5 * float(np.mean(edges[1::2] - edges[0::2]))
+        self.width = np.repeat(edges[1::2] - edges[0::2], 2)       # of each edge's contact
+
+    # ---- the zones' equations and the necks ----------------------------------------------------
+    def evaluate(self, t: np.ndarray) -> tuple[FieldSolution, np.ndarray]:
+        """The field with zones ``d = t²`` and its equations' values (``K̃``, mixed with the tip
+        condition at the zones that do not fill their neck)."""
         d = t * t
-        f = with_loads(base, kernel, zone_loads(edges, d, stress), **control)
-        k = weights @ f.sigma
-        if tip is not None:
-            k = tip.mixed(f, kernel, k, d, (d > 0.0) & ~filled(edges, d))
+        f = with_loads(self.base, self.kernel, zone_loads(self.edges, d, self.stress),
+                       **self.control)
+        k = self.weights @ f.sigma
+        if self.tip is not None:
+            k = self.tip.mixed(f, self.kernel, k, d, (d > 0.0) & ~filled(self.edges, d))
         return f, k
 
-    def fill(t, which):
+    def fill(self, t: np.ndarray, which: np.ndarray) -> np.ndarray:
         """``√d`` with the zones of ``which`` tiling their necks, in the ratio they had."""
         d = t * t
-        total = d + d[facing]
+        total = d + d[self.facing]
         share = np.where(total > 0.0, d / np.where(total > 0.0, total, 1.0), 0.5)
-        return np.sqrt(np.where(which, share * space, d))
+        return np.sqrt(np.where(which, share * self.space, d))
 
-    t = np.sqrt(np.clip(np.asarray(start, dtype=float), 0.0, 0.5 * free))
-    full = np.zeros(n, bool) if full is None else np.asarray(full, bool)
-    full = full & full[facing]
-    screened = np.zeros(n, bool)        # zones that have made their edge's K̃ negative
-    tested = np.zeros(n, bool)          # necks tried filled (once each)
+    def allowed(self, f: FieldSolution, necks: np.ndarray) -> bool:
+        """Whether the necks of the edges ``necks`` may be filled in ``f``."""
+        return self.admissible is None or bool(self.admissible(f, necks))
 
-    def allowed(f, necks):
-        return admissible is None or bool(admissible(f, necks))
-
-    def finished(f):
-        # the other zones' lengths moved since the necks were filled: are they still?
-        necks = filled(edges, zone_widths(f))
-        if np.any(necks) and not allowed(f, necks):
+    def finished(self, f: FieldSolution) -> FieldSolution:
+        """``f``, once its filled necks are checked (the other zones' lengths moved since the
+        necks were filled: are they still admissible?)."""
+        necks = filled(self.edges, zone_widths(f))
+        if np.any(necks) and not self.allowed(f, necks):
             raise ZoneError(_MEET)
         return f
 
-    if np.any(full):
-        t = fill(t, full)
-        if not allowed(evaluate(t)[0], full):
-            # the necks filled before no longer hold: they open, from short zones
-            t = np.where(full, np.sqrt(0.05 * space), t)
-            full = np.zeros(n, bool)
-    half = 0.5 * float(np.mean(edges[1::2] - edges[0::2]))
-    width = np.repeat(edges[1::2] - edges[0::2], 2)       # of each edge's contact
-    # the last positive √d of each zone (a zone whose Newton step went past zero is closed at
-    # once; if its edge is then tensile, it reopens at a fraction of this)
-    before = t.copy()
-    fields, k = evaluate(t)
-    capped = np.zeros(n, bool)
-    last = np.inf
-    for _ in range(ITERATIONS):
-        scale = stress * np.sqrt(max(float(np.max(t * t)), half))
-        active = ~((t == 0.0) & (k <= 0.0)) & ~full
-        size = float(np.max(np.abs(k[active]))) if np.any(active) else 0.0
+    # ---- the iteration -------------------------------------------------------------------------
+    def solve(self, start: np.ndarray, full: np.ndarray | None) -> FieldSolution:
+        """Iterate from the zone lengths ``start`` and the necks ``full`` filled at the start
+        (:func:`zone_fields`)."""
+        self._start(start, full)
+        for _ in range(ITERATIONS):
+            active = ~((self.t == 0.0) & (self.k <= 0.0)) & ~self.full
+            if self._converged(active):
+                return self.finished(self.fields)
+            if self._reopen():
+                continue
+            self.screened |= (self.t > 0.0) & (self.k < 0.0)
+            idx = np.flatnonzero(active)
+            step, beyond, wrong = self._newton_step(idx)
+            if np.any(wrong) and self._fill_unscreened(idx, wrong):
+                continue
+            if np.any(beyond):
+                self._shrink(idx, beyond)
+                continue
+            if self._advance(idx, step):
+                return self.finished(self.fields)
+        raise ZoneError(f"the bounded-stress equations of the zones did not converge in "
+                        f"{ITERATIONS} Newton iterations (largest K̃ {np.max(np.abs(self.k)):.3g})")
+
+    def _start(self, start: np.ndarray, full: np.ndarray | None) -> None:
+        """The state at the start: ``√d`` of ``start`` within half the room, the necks of
+        ``full`` (of both their edges) filled while they are admissible."""
+        n = self.n
+        t = np.sqrt(np.clip(np.asarray(start, dtype=float), 0.0, 0.5 * self.free))
+        full = np.zeros(n, bool) if full is None else np.asarray(full, bool)
+        full = full & full[self.facing]
+        self.screened = np.zeros(n, bool)        # zones that have made their edge's K̃ negative
+        self.tested = np.zeros(n, bool)          # necks tried filled (once each)
+        if np.any(full):
+            t = self.fill(t, full)
+            if not self.allowed(self.evaluate(t)[0], full):
+                # the necks filled before no longer hold: they open, from short zones
+                t = np.where(full, np.sqrt(0.05 * self.space), t)
+                full = np.zeros(n, bool)
+        self.full = full
+        # the last positive √d of each zone (a zone whose Newton step went past zero is closed
+        # at once; if its edge is then tensile, it reopens at a fraction of this)
+        self.before = t.copy()
+        self.t = t
+        self.fields, self.k = self.evaluate(t)
+        self.capped = np.zeros(n, bool)
+        self.last = np.inf
+
+    def _converged(self, active: np.ndarray) -> bool:
+        """Whether the equations of the ``active`` zones hold to :data:`EDGE_TOLERANCE`, or to
+        :data:`NOISE` once they stop decreasing (the fit's round-off); else their size is kept
+        for the next test."""
+        scale = self.stress * np.sqrt(max(float(np.max(self.t * self.t)), self.half))
+        size = float(np.max(np.abs(self.k[active]))) if np.any(active) else 0.0
         if size <= EDGE_TOLERANCE * scale + 1e-15:
-            return finished(fields)
-        if size <= NOISE * scale and size > 0.5 * last:
-            return finished(fields)       # at the fit's round-off: no longer decreasing
-        last = size
-        reopen = (t == 0.0) & (k > 0.0) & ~full
-        if np.any(reopen):
-            # an edge without a zone whose stress is tensile: its zone opens, at a fraction of
-            # the zone it had (the root lies between) or else at Dugdale's short zone
-            # d = πK²/(8σ0²). Newton cannot start from zero: ∂K̃/∂√d = 2√d ∂K̃/∂d vanishes.
-            # At most a tenth of the contact: Dugdale's zone holds for zones short against it,
-            # and K̃(d) has a second, long-zone root past its minimum (weak adhesion on a
-            # sinusoid, σ̃0 = 3e-4: the short-zone seed, capped by the room only, landed on
-            # zones of 1.97 where the answer was 0.43)
-            seed = np.where(before > 0.0, 0.3 * before, np.sqrt(np.pi / 8.0) * k / stress)
-            t = np.where(reopen, np.minimum(seed, np.sqrt(np.minimum(0.5 * free, 0.1 * width))),
-                         t)
-            before = np.where(reopen, t, before)
-            fields, k = evaluate(t)
-            continue
-        screened |= (t > 0.0) & (k < 0.0)
-        idx = np.flatnonzero(active)
-        J = intensity_jacobian(fields, kernel, stress=stress, control=control, columns=idx)[idx]
+            return True
+        if size <= NOISE * scale and size > 0.5 * self.last:
+            return True       # at the fit's round-off: no longer decreasing
+        self.last = size
+        return False
+
+    def _reopen(self) -> bool:
+        """Open a zone at every edge without one whose stress is tensile; whether any did."""
+        t, k = self.t, self.k
+        reopen = (t == 0.0) & (k > 0.0) & ~self.full
+        if not np.any(reopen):
+            return False
+        # an edge without a zone whose stress is tensile: its zone opens, at a fraction of
+        # the zone it had (the root lies between) or else at Dugdale's short zone
+        # d = πK²/(8σ0²). Newton cannot start from zero: ∂K̃/∂√d = 2√d ∂K̃/∂d vanishes.
+        # At most a tenth of the contact: Dugdale's zone holds for zones short against it,
+        # and K̃(d) has a second, long-zone root past its minimum (weak adhesion on a
+        # sinusoid, σ̃0 = 3e-4: the short-zone seed, capped by the room only, landed on
+        # zones of 1.97 where the answer was 0.43)
+        before = self.before
+        seed = np.where(before > 0.0, 0.3 * before, np.sqrt(np.pi / 8.0) * k / self.stress)
+        t = np.where(reopen, np.minimum(seed, np.sqrt(np.minimum(0.5 * self.free,
+                                                                 0.1 * self.width))), t)
+        self.before = np.where(reopen, t, before)
+        self.t = t
+        self.fields, self.k = self.evaluate(t)
+        return True
+
+    def _jacobian(self, idx: np.ndarray) -> np.ndarray:
+        """The equations' Jacobian in ``√d`` among the zones ``idx``."""
+        fields, kernel, tip, t = self.fields, self.kernel, self.tip, self.t
+        J = intensity_jacobian(fields, kernel, stress=self.stress, control=self.control,
+                               columns=idx)[idx]
         if tip is not None:
             w = tip.weights(fields, kernel, t * t)[idx]
-            J -= w[:, None] * tip_gap_jacobian(fields, kernel, tip.shape, stress=stress,
-                                               control=control, columns=idx)[idx]
+            J -= w[:, None] * tip_gap_jacobian(fields, kernel, tip.shape, stress=self.stress,
+                                               control=self.control, columns=idx)[idx]
         J *= 2.0 * t[idx]
+        return J
+
+    def _newton_step(self, idx: np.ndarray):
+        """``(step, beyond, wrong)`` among the zones ``idx``: the Newton step in ``√d`` (None
+        when some zone is ``beyond`` the minimum of its equation, its diagonal >= 0), and the
+        zones told to go the wrong way (to shrink where they need to grow, or beyond)."""
+        J = self._jacobian(idx)
+        k, t = self.k, self.t
         beyond = np.diag(J) >= 0.0
         step = None
         if not np.any(beyond):
@@ -446,34 +523,83 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
             wrong = (k[idx] > 0.0) & (step < 0.0) & (t[idx] > 0.0)
         else:
             wrong = beyond
-        if np.any(wrong):
-            # past the minimum of K̃ in the zone length (zones long against the contact undo
-            # their own screening). A zone that never screened its edge (K̃ > 0 all along) may
-            # have no root: if K̃ stays positive at an edge with its neck filled, the neck fills;
-            # otherwise back towards the smallest root
-            grow = np.zeros(n, bool)
-            grow[idx[wrong]] = True
-            unscreened = grow & (k > 0.0) & ~screened & ~tested
-            if np.any(unscreened):
-                neck = unscreened | unscreened[facing]
-                tested |= neck
-                trial = fill(t, full | neck)
-                f_try, k_try = evaluate(trial)
-                # (mixed with the tip condition, the zones' equations at their meeting point:
-                # continuous with theirs just before it, where the filled neck has no tips)
-                k_met = (k_try if tip is None
-                         else tip.mixed(f_try, kernel, k_try, trial * trial, neck))
-                if np.any(neck & (k_met >= 0.0)) and allowed(f_try, neck):
-                    full = full | neck
-                    t, fields, k = trial, f_try, k_try
-                    capped = np.zeros(n, bool)
-                    last = np.inf
-                    continue
-        if np.any(beyond):
-            t = t.copy()
-            t[idx[beyond]] *= 0.3
-            fields, k = evaluate(t)
-            continue
+        return step, beyond, wrong
+
+    def _fill_unscreened(self, idx: np.ndarray, wrong: np.ndarray) -> bool:
+        """Fill the necks of zones told the wrong way that never screened their edge, if the
+        equations stay >= 0 where the zones meet and the necks are admissible; whether they
+        were filled.
+
+        Past the minimum of K̃ in the zone length (zones long against the contact undo their
+        own screening), a zone that never screened its edge (K̃ > 0 all along) may have no
+        root: if K̃ stays positive at an edge with its neck filled, the neck fills; otherwise
+        the step goes back towards the smallest root."""
+        grow = np.zeros(self.n, bool)
+        grow[idx[wrong]] = True
+        unscreened = grow & (self.k > 0.0) & ~self.screened & ~self.tested
+        if not np.any(unscreened):
+            return False
+        neck = unscreened | unscreened[self.facing]
+        self.tested |= neck
+        trial = self.fill(self.t, self.full | neck)
+        f_try, k_try = self.evaluate(trial)
+        # (mixed with the tip condition, the zones' equations at their meeting point:
+        # continuous with theirs just before it, where the filled neck has no tips)
+        k_met = (k_try if self.tip is None
+                 else self.tip.mixed(f_try, self.kernel, k_try, trial * trial, neck))
+        if np.any(neck & (k_met >= 0.0)) and self.allowed(f_try, neck):
+            self._filled(neck, trial, f_try, k_try)
+            return True
+        return False
+
+    def _filled(self, necks: np.ndarray, t: np.ndarray, fields: FieldSolution,
+                k: np.ndarray) -> None:
+        """Take the state with the necks ``necks`` filled: ``t``, its field and equations."""
+        self.full = self.full | necks
+        self.t, self.fields, self.k = t, fields, k
+        self.capped = np.zeros(self.n, bool)
+        self.last = np.inf
+
+    def _shrink(self, idx: np.ndarray, beyond: np.ndarray) -> None:
+        """Shorten the zones ``beyond`` the minimum of their equation to 0.3 of their √d."""
+        t = self.t.copy()
+        t[idx[beyond]] *= 0.3
+        self.t = t
+        self.fields, self.k = self.evaluate(t)
+
+    def _advance(self, idx: np.ndarray, step: np.ndarray) -> bool:
+        """Take the Newton ``step`` of the zones ``idx``, limited (:meth:`_limited`) and kept
+        within the room; zones capped at the room twice running fill their neck instead.
+        Whether the step was below :data:`EDGE_STEP` (converged)."""
+        facing, full = self.facing, self.full
+        new = self._limited(idx, step)
+        d = new * new
+        over = (d + d[facing] > self.free) & ~full
+        if np.any(over & self.capped):
+            # capped twice running: no root before the zones meet, so they fill the neck
+            meet = over & self.capped
+            trial = self.fill(new, full | meet | meet[facing])
+            f_try, k_try = self.evaluate(trial)
+            if not self.allowed(f_try, meet | meet[facing]):
+                raise ZoneError(_MEET)
+            self._filled(meet | meet[facing], trial, f_try, k_try)
+            return False
+        if np.any(over):
+            total = np.where(over, d + d[facing], 1.0)     # (two closed zones: 0/0 otherwise)
+            d = np.where(over, d / total * self.free, d)
+            new = np.sqrt(d)
+        self.capped = over
+        t = self.t
+        done = float(np.max(np.abs(new - t))) <= EDGE_STEP * max(float(np.max(new)), 1e-300)
+        self.t = new
+        self.fields, self.k = self.evaluate(new)
+        return done
+
+    def _limited(self, idx: np.ndarray, step: np.ndarray) -> np.ndarray:
+        """``√d`` after the Newton ``step`` of the zones ``idx``: a zone stepped past zero
+        closes (its last positive ``√d`` is kept), and no zone grows more than
+        :data:`GROWTH` times in ``√d``."""
+        t = self.t
         new = t.copy()
         new[idx] = t[idx] + step
         # a step past zero closes the zone: an edge whose stress is compressive without a zone
@@ -481,39 +607,13 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
         # by a factor per iteration instead left zones far below the edge element, where
         # K̃ no longer changes with them: the guard against long zones then took every iteration
         # (rough profile, an edge turning compressive at an approach step: 60 iterations spent)
-        before = np.where(t > 0.0, t, before)
+        self.before = np.where(t > 0.0, t, self.before)
         new = np.where(new < 0.0, 0.0, new)
         # at most GROWTH times longer in √d per iteration: K̃ flattens towards its minimum in
         # the zone length, so a Newton step from short zones overshoots the root (sinusoid,
         # load control, Γ̃ = 1e-3, η = 0.2: √d from 0.50 to 1.38 against a root at 0.65, where
         # the zones filled the gap and were reported as meeting)
-        new = np.where(t > 0.0, np.minimum(new, GROWTH * t), new)
-        d = new * new
-        over = (d + d[facing] > free) & ~full
-        if np.any(over & capped):
-            # capped twice running: no root before the zones meet, so they fill the neck
-            meet = over & capped
-            trial = fill(new, full | meet | meet[facing])
-            f_try, k_try = evaluate(trial)
-            if not allowed(f_try, meet | meet[facing]):
-                raise ZoneError(_MEET)
-            full = full | meet | meet[facing]
-            t, fields, k = trial, f_try, k_try
-            capped = np.zeros(n, bool)
-            last = np.inf
-            continue
-        if np.any(over):
-            total = np.where(over, d + d[facing], 1.0)     # (two closed zones: 0/0 otherwise)
-            d = np.where(over, d / total * free, d)
-            new = np.sqrt(d)
-        capped = over
-        done = float(np.max(np.abs(new - t))) <= EDGE_STEP * max(float(np.max(new)), 1e-300)
-        t = new
-        fields, k = evaluate(t)
-        if done:
-            return finished(fields)
-    raise ZoneError(f"the bounded-stress equations of the zones did not converge in "
-                    f"{ITERATIONS} Newton iterations (largest K̃ {np.max(np.abs(k)):.3g})")
+        return np.where(t > 0.0, np.minimum(new, GROWTH * t), new)
 
 
 @attrs.frozen(kw_only=True, eq=False)
@@ -564,36 +664,101 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
     numpy.linalg.LinAlgError
         When ``∂K̃/∂d`` is singular (the lengths do not follow the edges).
     """
-    mesh = fields.mesh
-    kernel = dfields.kernel
-    n_dirs = dfields.n_dirs
-    n = len(mesh.edges)
-    loads = fields.loads
-    if loads is None:
+    if fields.loads is None:
         raise ValueError("zone_derivatives: fields without zones (loads is None)")
     d = zone_widths(fields)
-    act = np.flatnonzero(d > 0)
-    m = act.size
-    sign = np.tile([-1.0, 1.0], n // 2)[act]      # a tip's motion per unit length of its zone
-    a, b = loads.left[act], loads.right[act]
-    c = tips(mesh.edges, d)[act]
-    E = np.zeros((m, n_dirs))                     # zone ends and tips move with their edges
-    E[np.arange(m), act] = 1.0
-
-    slopes = functools.partial(_kernel_slopes, kernel)
-    xi = mesh.mid
-    # the stresses: at fixed lengths in every direction (the zones move with their edges), then
-    # per unit length of each zone
-    moved = slopes(xi[:, None] - a[None, :]) - slopes(xi[:, None] - b[None, :])
-    u_dot = stress * (moved.sum(axis=1)[:, None] * dfields.colloc_vel - moved @ E)
-    sx = lu_solve(fields.lu, dfields.rhs - u_dot, check_finite=False)
-    sd = _growth_stresses(fields, kernel, stress, c)
+    z = _MovingZones.of(fields, dfields.n_dirs)
+    sx, sd = _zone_stress_derivatives(fields, dfields, stress, z)
     # stress-intensity factors
     W, explicit = dfields.fit_motion(BOUNDED_POWERS)
     kx, kd = W @ sx + explicit, W @ sd
-    # tip gaps: the stresses, then the elements under the moving tip, the zones, the profile
-    # (a filled neck's two zones meet tip to end, where the kernel's slope is logarithmic;
-    # their rows are not used and are cleared below)
+    gx, gd = _tip_gap_derivatives(fields, dfields, stress, z, sx, sd)
+    # the load (the zones' force σ̃0·Σd counts)
+    h = fields.mesh.width
+    px = -(dfields.width_vel.T @ fields.sigma + h @ sx) / (2 * np.pi)
+    pd = -(h @ sd + stress) / (2 * np.pi)
+    full, dd = _length_derivatives(fields.mesh.edges, d, z.act, dfields.n_dirs, kx, kd, gx, gd,
+                                   tip_weights)
+    n = len(fields.mesh.edges)
+    lengths = np.zeros((n, dfields.n_dirs))
+    lengths[z.act] = dd
+    # a filled neck has no tips: its zones' rows (where the meeting tips sit on each other's
+    # ends, the kernel's logarithmic slope) are not used
+    gx = np.where(full[:, None], 0.0, gx)
+    gd = np.where(full[:, None], 0.0, gd)
+    gaps = np.zeros((n, dfields.n_dirs))
+    gaps[z.act] = gx + gd @ dd
+    if not np.all(np.isfinite(gaps)):
+        raise np.linalg.LinAlgError("a zone tip sits on another zone's end")
+    return ZoneDerivatives(lengths=lengths, intensity=kx + kd @ dd, gaps=gaps,
+                           pressure=px + pd @ dd)
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class _MovingZones:
+    """The zones of a field that have a length, as :func:`zone_derivatives` moves them (``m``
+    zones, ``D`` directions).
+
+    Attributes
+    ----------
+    act : (m,) int array
+        Their edges.
+    sign : (m,)
+        A tip's motion per unit length of its zone: -1 at a left edge, +1 at a right one.
+    a, b : (m,)
+        Their ends, left and right.
+    c : (m,)
+        Their tips.
+    E : (m, D)
+        The motion of their ends and tips in every direction: with their own edges.
+    """
+
+    act: np.ndarray
+    sign: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    c: np.ndarray
+    E: np.ndarray
+
+    @classmethod
+    def of(cls, fields: FieldSolution, n_dirs: int) -> "_MovingZones":
+        """The zones of ``fields`` (with zones) for ``n_dirs`` directions."""
+        mesh, loads = fields.mesh, fields.loads
+        n = len(mesh.edges)
+        d = zone_widths(fields)
+        act = np.flatnonzero(d > 0)
+        m = act.size
+        E = np.zeros((m, n_dirs))                     # zone ends and tips move with their edges
+        E[np.arange(m), act] = 1.0
+        return cls(act=act, sign=np.tile([-1.0, 1.0], n // 2)[act], a=loads.left[act],
+                   b=loads.right[act], c=tips(mesh.edges, d)[act], E=E)
+
+
+def _zone_stress_derivatives(fields: FieldSolution, dfields, stress: float,
+                             z: _MovingZones) -> tuple[np.ndarray, np.ndarray]:
+    """``(σ̇_x, σ̇_d)``: the contact stresses' derivatives at fixed zone lengths in every
+    direction (the zones move with their edges: their loads' displacement at the collocation
+    points changes like an influence coefficient whose ends and point move), (N, D), and per
+    unit length of each zone (:func:`intensity_jacobian`), (N, m)."""
+    slopes = functools.partial(_kernel_slopes, dfields.kernel)
+    xi = fields.mesh.mid
+    moved = slopes(xi[:, None] - z.a[None, :]) - slopes(xi[:, None] - z.b[None, :])
+    u_dot = stress * (moved.sum(axis=1)[:, None] * dfields.colloc_vel - moved @ z.E)
+    sx = lu_solve(fields.lu, dfields.rhs - u_dot, check_finite=False)
+    sd = _growth_stresses(fields, dfields.kernel, stress, z.c)
+    return sx, sd
+
+
+def _tip_gap_derivatives(fields: FieldSolution, dfields, stress: float, z: _MovingZones,
+                         sx: np.ndarray, sd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(ġ_x, ġ_d)``: the tip gaps' derivatives in every direction at fixed zone lengths,
+    (m, D), and per unit length of each zone, (m, m), from the stresses' (``sx``, ``sd``,
+    :func:`_zone_stress_derivatives`): the stresses, then the elements under the moving tip,
+    the zones, the profile and the penetration. (A filled neck's two zones meet tip to end,
+    where the kernel's slope is logarithmic; their rows are not finite, and not used.)"""
+    mesh, kernel = fields.mesh, dfields.kernel
+    slopes = functools.partial(_kernel_slopes, kernel)
+    sign, a, b, c, E = z.sign, z.a, z.b, z.c, z.E
     with np.errstate(invalid="ignore", divide="ignore"):
         infl = kernel.influence(c, mesh.left, mesh.right)
         s = dfields.node_weights(fields.sigma)
@@ -602,7 +767,7 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
         gx = (infl @ sx + E * at_tip[:, None] - g_nodes @ (s[:, None] * dfields.node_vel))
         gd = infl @ sd + np.diag(sign * at_tip)
         # the zones seen from the moving tips (each zone's end at its own tip moves with it)
-        diag = np.arange(m)
+        diag = np.arange(len(c))
         zone_a = slopes(c[:, None] - a[None, :])
         zone_b = slopes(c[:, None] - b[None, :])
         zone_a[diag, diag] = np.where(sign < 0, 0.0, zone_a[diag, diag])
@@ -621,16 +786,23 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
     gx -= r_slope[:, None] * E
     gx[:, -1] -= 1.0
     gd -= np.diag(r_slope * sign)
-    # the load (the zones' force σ̃0·Σd counts)
-    h = mesh.width
-    px = -(dfields.width_vel.T @ fields.sigma + h @ sx) / (2 * np.pi)
-    pd = -(h @ sd + stress) / (2 * np.pi)
-    # the lengths: a zone of a filled neck keeps its share f of the neck (d = f·room, the room
-    # X_L - X_R between the neck's right edge R and left edge L), every other zone keeps K̃ = 0
-    full = filled(mesh.edges, d)[act]
-    dd = np.zeros((m, n_dirs))
+    return gx, gd
+
+
+def _length_derivatives(edges: np.ndarray, d: np.ndarray, act: np.ndarray, n_dirs: int,
+                        kx: np.ndarray, kd: np.ndarray, gx: np.ndarray, gd: np.ndarray,
+                        tip_weights: np.ndarray | None) -> tuple[np.ndarray, np.ndarray]:
+    """``(full, ḋ)`` of the zones ``act``: which fill their neck, and their lengths'
+    derivatives (m, D). A zone of a filled neck keeps its share ``f`` of the neck (``d =
+    f·room``, the room ``X_L - X_R`` between the neck's right edge R and left edge L); every
+    other zone keeps ``K̃ - W (g̃ - η) = 0`` (``W`` its ``tip_weights``, 0 without: ``K̃ = 0``;
+    :class:`TipCondition`), from the intensities' ``kx``, ``kd`` and the tip gaps' ``gx``,
+    ``gd`` derivatives at fixed lengths and per unit length."""
+    n = len(edges)
+    full = filled(edges, d)[act]
+    dd = np.zeros((act.size, n_dirs))
     if np.any(full):
-        space = room(mesh.edges)[act]
+        space = room(edges)[act]
         right, left = neck_ends(n)
         right, left = right[act], left[act]
         dd[full] = (d[act][full] / space[full])[:, None] * (
@@ -643,18 +815,7 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
         phi_d = kd[rows] - w[:, None] * gd[free]
         phi_x = kx[rows] - w[:, None] * gx[free]
         dd[free] = -np.linalg.solve(phi_d[:, free], phi_x + phi_d[:, full] @ dd[full])
-    lengths = np.zeros((n, n_dirs))
-    lengths[act] = dd
-    # a filled neck has no tips: its zones' rows (where the meeting tips sit on each other's
-    # ends, the kernel's logarithmic slope) are not used
-    gx = np.where(full[:, None], 0.0, gx)
-    gd = np.where(full[:, None], 0.0, gd)
-    gaps = np.zeros((n, n_dirs))
-    gaps[act] = gx + gd @ dd
-    if not np.all(np.isfinite(gaps)):
-        raise np.linalg.LinAlgError("a zone tip sits on another zone's end")
-    return ZoneDerivatives(lengths=lengths, intensity=kx + kd @ dd, gaps=gaps,
-                           pressure=px + pd @ dd)
+    return full, dd
 
 
 _MEET = ("no zone lengths bound the stress at these edges: the zones of neighbouring contacts "

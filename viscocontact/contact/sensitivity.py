@@ -264,151 +264,15 @@ class FieldSensitivity:
         solves (one multiple right-hand-side solve on the base factorisation) and the products
         with the base mesh's slope matrices (matrix-matrix instead of one matrix-vector product
         per edge). None when any advance is not bordered."""
-        f, mesh = self.fields, self.fields.mesh
-        D = self.n_dirs
-        sig, h, w = f.sigma, mesh.width, f.rhs0 + f.penetration
         edges = []
         for i, dx, ddx in advances:
-            border = ctx.border(i, dx)
-            if border is None:
+            advance = _Advance.of(self, ctx, i, dx, ddx)
+            if advance is None:
                 return None
-            ddx = np.zeros(D) if ddx is None else np.asarray(ddx, dtype=float)
-            n = len(border.s_new)
-            # new nodes: translated with edge i; with the advance, those of the new edge's
-            # fixed sizes move with the new edge, the others are stretched between it and the
-            # old edge (new_element_layout)
-            new_nodes = np.append(border.left, border.right[-1])
-            x_edge = mesh.edges[i]
-            side = -1.0 if i % 2 == 0 else 1.0               # the new edge's side
-            o = side * (x_edge + side * dx - new_nodes)       # distance from the new edge
-            layout = new_element_layout(mesh, ctx.spec, i, dx)
-            fixed = 0 if layout is None else layout[2]
-            held = np.sort(o)[fixed]
-            stretch = np.where(o <= held, 0.0, (o - held) / (dx - held))
-            nv = np.outer(side * (1.0 - stretch), ddx)
-            nv[:, i] += 1.0
-            li_n, ri_n = np.arange(n), np.arange(1, n + 1)
-            xi_n = 0.5 * (border.left + border.right)
-            edges.append(_Advance(
-                border=border, dx=float(dx), ddx=ddx, nodes=new_nodes, node_vel=nv, mid=xi_n,
-                colloc_vel=0.5 * (nv[li_n] + nv[ri_n]), width_vel=nv[ri_n] - nv[li_n],
-                s_b=self.node_weights(border.s_old),
-                s_n=self.node_weights(border.s_new, li_n, ri_n, n + 1)))
-        m = len(edges)
-        if m == 0:
-            return np.empty((0, D))
-        dissipative = self.dissipative and all(e.border.cols is not None for e in edges)
-        # kernel slopes for every edge's new nodes and collocation points, in three calls
-        node_bounds = np.cumsum([0] + [len(e.nodes) for e in edges])
-        mid_bounds = np.cumsum([0] + [len(e.mid) for e in edges])
-        all_nodes = np.concatenate([e.nodes for e in edges])
-        all_mid = np.concatenate([e.mid for e in edges])
-        G_bb, E_bb = self.slopes
-        G_bn, E_bn = self._slopes(mesh.mid, all_nodes)
-        G_nb, E_nb = self._slopes(all_mid, self.nodes)
-        G_nn, _ = self._slopes(all_mid, all_nodes)
-        s_sig = self.node_weights(sig)
-        S_b = np.column_stack([e.s_b for e in edges])                       # (K, M)
-        S_old = np.column_stack([e.border.s_old for e in edges])            # (N, M)
-        psi_b = -0.5 * h * w
-        Psi = np.repeat((0.5 * h * w)[:, None], m, axis=1)                  # ∂/∂σ of the base field
-        if dissipative:
-            a_sig, hsig_a = ctx._base_products()
-            A0 = ctx._antisymmetric_matrix()
-            hsig = h * sig
-            psi_b = psi_b - 0.25 * (hsig_a - h * a_sig)
-            hS_old = h[:, None] * S_old
-
-        # the products with the base mesh's (N, N) matrices, in two halves of about equal
-        # cost, on two threads at once (the same calls, so the same bits); the first half also
-        # computes ``f = ẇ - Ḃσ`` (:attr:`rhs`, two more such products)
-        def left():
-            out = {"GS_b": G_bb @ S_b, "rhs": self.rhs}                     # (N, M), (N, D)
-            if dissipative:
-                out.update(A_old=A0 @ S_old,                                # (N, M)
-                           ES_b=E_bb @ S_b,                                 # (N, M)
-                           E_bb_sig=E_bb @ s_sig)                           # (N,)
-            return out
-
-        def right():
-            return {"At_old": A0.T @ hS_old,                                # (N, M)
-                    "hsE_old": E_bb.T @ hS_old,                             # (K, M)
-                    "hsig_E_bb": hsig @ E_bb,                               # (K,)
-                    "E_nb_sig": E_nb @ s_sig}                               # (Σn,)
-        products, transposed = pair(left, right) if dissipative else (left(), {})
-        GS_b, rhs = products["GS_b"], products["rhs"]
-        if dissipative:
-            A_old, ES_b, E_bb_sig = products["A_old"], products["ES_b"], products["E_bb_sig"]
-            At_old, hsE_old = transposed["At_old"], transposed["hsE_old"]
-            hsig_E_bb, E_nb_sig = transposed["hsig_E_bb"], transposed["E_nb_sig"]
-        lam_n, rhs_b = [], np.empty((len(sig), m))
-        for k, e in enumerate(edges):
-            b = e.border
-            h_n = b.right - b.left
-            psi_n = -0.5 * h_n * b.w_new
-            if dissipative:
-                cols, rows = b.cols, b.rows
-                assert cols is not None and rows is not None
-                psi_n = psi_n - 0.25 * (cols.T @ hsig - h_n * (rows @ sig))
-                a_e = A_old[:, k] + cols @ b.s_new
-                Psi[:, k] -= 0.25 * (h * a_e - (At_old[:, k] + rows.T @ (h_n * b.s_new)))
-            # λₑ = Bₑ⁻ᵀ ψₑ through the Schur complement: λ_n = S⁻ᵀ(ψ_n - Yᵀψ_b),
-            # λ_b = B⁻ᵀ(ψ_b - rᵀλ_n)
-            ln = lu_solve(b.schur, psi_n - b.Y.T @ psi_b, trans=1, check_finite=False)
-            lam_n.append(ln)
-            rhs_b[:, k] = psi_b - b.r.T @ ln
-        lam = self.adjoint(np.column_stack([rhs_b, Psi]))                  # (N, 2M)
-        lam_b, mu = lam[:, :m], lam[:, m:]
-        base, LG_b = pair(lambda: mu.T @ rhs,                              # (M, D)
-                          lambda: G_bb.T @ lam_b)                           # (K, M)
-        # the part of the explicit term that does not depend on the advance
-        explicit_base = 0.5 * (self.width_vel.T @ (sig * w) + self.w_vel.T @ (h * sig))
-        out = np.empty((m, D))
-        for k, e in enumerate(edges):
-            b = e.border
-            # its columns among all new nodes and its rows among all new collocation points
-            nb_ = slice(node_bounds[k], node_bounds[k + 1])
-            mb_ = slice(mid_bounds[k], mid_bounds[k + 1])
-            h_n = b.right - b.left
-            s_old, s_new, s_b, s_n = b.s_old, b.s_new, e.s_b, e.s_n
-            wv_n = self.shape.slopes(e.mid)[:, None] * e.colloc_vel
-            wv_n[:, -1] = 1.0
-            explicit = (-0.5 * (self.width_vel.T @ (s_old * w) + e.width_vel.T @ (s_new * b.w_new)
-                                + self.w_vel.T @ (h * s_old) + wv_n.T @ (h_n * s_new))
-                        + explicit_base)
-            g_bn, g_nb, g_nn = G_bn[:, nb_], G_nb[mb_], G_nn[mb_, nb_]
-            if dissipative:
-                cols, rows = b.cols, b.rows
-                assert cols is not None and rows is not None
-                e_bn, e_nb = E_bn[:, nb_], E_nb[mb_]
-                a_e = A_old[:, k] + cols @ s_new
-                # T1: ḣ on the base rows of (h̄σ̄)ᵀAₑσₑ
-                t1 = self.width_vel.T @ (sig * a_e)
-                # T2: (h̄σ̄)ᵀ Ȧₑ σₑ (base rows, all nodes)
-                e_s = ES_b[:, k] + e_bn @ s_n
-                t2 = (self.colloc_vel.T @ (hsig * e_s) - self.node_vel.T @ (hsig_E_bb * s_b)
-                      - e.node_vel.T @ ((hsig @ e_bn) * s_n))
-                # T3: ḣₑ in (hₑσₑ)ᵀAₑσ̄
-                t3 = (self.width_vel.T @ (s_old * a_sig)
-                      + e.width_vel.T @ (s_new * (rows @ sig)))
-                # T4: (hₑσₑ)ᵀ Ȧₑ σ̄ (all rows, base nodes only: σ̄ vanishes on the new elements)
-                hs_old, hs_new = h * s_old, h_n * s_new
-                t4 = (self.colloc_vel.T @ (hs_old * E_bb_sig)
-                      + e.colloc_vel.T @ (hs_new * E_nb_sig[mb_])
-                      - self.node_vel.T @ ((hsE_old[:, k] + hs_new @ e_nb) * s_sig))
-                explicit = explicit - 0.25 * (t1 + t2 - t3 - t4)
-            lb, ln = lam_b[:, k], lam_n[k]
-            # λₑᵀ(ẇₑ - Ḃₑσₑ)
-            g_b = GS_b[:, k] + g_bn @ s_n
-            g_n = g_nb @ s_b + g_nn @ s_n
-            lg_b = LG_b[:, k] + ln @ g_nb
-            lg_n = lb @ g_bn + ln @ g_nn
-            b_e = (self.colloc_vel.T @ (lb * g_b) + e.colloc_vel.T @ (ln * g_n)
-                   - self.node_vel.T @ (lg_b * s_b) - e.node_vel.T @ (lg_n * s_n))
-            enlarged = self.w_vel.T @ lb + wv_n.T @ ln - b_e
-            total = (b.d_u + b.d_lp) / e.dx
-            out[k] = (enlarged + base[k] + explicit) / e.dx - total * e.ddx / e.dx
-        return out
+            edges.append(advance)
+        if not edges:
+            return np.empty((0, self.n_dirs))
+        return _EnergyReleases(self, ctx, edges).values()
 
 
 @attrs.define(kw_only=True, eq=False)
@@ -426,3 +290,205 @@ class _Advance:
     width_vel: np.ndarray
     s_b: np.ndarray
     s_n: np.ndarray
+
+    @classmethod
+    def of(cls, sens: FieldSensitivity, ctx, i: int, dx: float, ddx) -> "_Advance | None":
+        """Edge ``i`` of ``sens``'s field advanced by ``dx`` on the bordered mesh of ``ctx``
+        (``ddx``: the advance's own derivatives, (D,), or None); None when it is not
+        bordered."""
+        border = ctx.border(i, dx)
+        if border is None:
+            return None
+        mesh = sens.fields.mesh
+        ddx = np.zeros(sens.n_dirs) if ddx is None else np.asarray(ddx, dtype=float)
+        n = len(border.s_new)
+        # new nodes: translated with edge i; with the advance, those of the new edge's
+        # fixed sizes move with the new edge, the others are stretched between it and the
+        # old edge (new_element_layout)
+        new_nodes = np.append(border.left, border.right[-1])
+        x_edge = mesh.edges[i]
+        side = -1.0 if i % 2 == 0 else 1.0               # the new edge's side
+        o = side * (x_edge + side * dx - new_nodes)       # distance from the new edge
+        layout = new_element_layout(mesh, ctx.spec, i, dx)
+        fixed = 0 if layout is None else layout[2]
+        held = np.sort(o)[fixed]
+        stretch = np.where(o <= held, 0.0, (o - held) / (dx - held))
+        nv = np.outer(side * (1.0 - stretch), ddx)
+        nv[:, i] += 1.0
+        li_n, ri_n = np.arange(n), np.arange(1, n + 1)
+        xi_n = 0.5 * (border.left + border.right)
+        return cls(border=border, dx=float(dx), ddx=ddx, nodes=new_nodes, node_vel=nv, mid=xi_n,
+                   colloc_vel=0.5 * (nv[li_n] + nv[ri_n]), width_vel=nv[ri_n] - nv[li_n],
+                   s_b=sens.node_weights(border.s_old),
+                   s_n=sens.node_weights(border.s_new, li_n, ri_n, n + 1))
+
+
+class _EnergyReleases:
+    """The derivatives of the energy releases of a batch of edge advances
+    (:meth:`FieldSensitivity.energy_releases`), in the stages they share: the kernel slopes
+    of every new node and collocation point (three calls), the products with the base mesh's
+    matrices (on two threads), the adjoint solves (one multiple right-hand-side solve); then
+    each advance's derivative (:meth:`values`), with the terms of a non-reciprocal
+    (dissipative) kernel apart (:meth:`_dissipative_terms`)."""
+
+    def __init__(self, sens: FieldSensitivity, ctx, edges: list[_Advance]):
+        f = sens.fields
+        self.sens, self.edges, self.mesh = sens, edges, f.mesh
+        self.sig, self.h, self.w = f.sigma, f.mesh.width, f.rhs0 + f.penetration
+        self.dissipative = sens.dissipative and all(e.border.cols is not None for e in edges)
+        self._slopes()
+        self._base_functionals(ctx)
+        self._products()
+        self._adjoints()
+
+    def _slopes(self) -> None:
+        """The kernel slopes for every edge's new nodes and collocation points, in three
+        calls, and the node weights of the base stresses and of the old elements."""
+        sens, edges = self.sens, self.edges
+        self.node_bounds = np.cumsum([0] + [len(e.nodes) for e in edges])
+        self.mid_bounds = np.cumsum([0] + [len(e.mid) for e in edges])
+        all_nodes = np.concatenate([e.nodes for e in edges])
+        all_mid = np.concatenate([e.mid for e in edges])
+        self.G_bb, self.E_bb = sens.slopes
+        self.G_bn, self.E_bn = sens._slopes(self.mesh.mid, all_nodes)
+        self.G_nb, self.E_nb = sens._slopes(all_mid, sens.nodes)
+        self.G_nn, _ = sens._slopes(all_mid, all_nodes)
+        self.s_sig = sens.node_weights(self.sig)
+        self.S_b = np.column_stack([e.s_b for e in edges])                  # (K, M)
+        self.S_old = np.column_stack([e.border.s_old for e in edges])       # (N, M)
+
+    def _base_functionals(self, ctx) -> None:
+        """The base rows of the functionals' derivatives in ``σ``: ``ψ_b`` of the enlarged
+        field and ``Ψ`` of the base field (with the antisymmetric part when dissipative)."""
+        h, w, sig = self.h, self.w, self.sig
+        self.psi_b = -0.5 * h * w
+        # ∂/∂σ of the base field
+        self.Psi = np.repeat((0.5 * h * w)[:, None], len(self.edges), axis=1)
+        if self.dissipative:
+            self.a_sig, hsig_a = ctx._base_products()
+            self.A0 = ctx._antisymmetric_matrix()
+            self.hsig = h * sig
+            self.psi_b = self.psi_b - 0.25 * (hsig_a - h * self.a_sig)
+            self.hS_old = h[:, None] * self.S_old
+
+    def _products(self) -> None:
+        """The products with the base mesh's (N, N) matrices, in two halves of about equal
+        cost, on two threads at once (the same calls, so the same bits); the first half also
+        computes ``f = ẇ - Ḃσ`` (:attr:`FieldSensitivity.rhs`, two more such products)."""
+        dissipative = self.dissipative
+        G_bb, E_bb, S_b, s_sig = self.G_bb, self.E_bb, self.S_b, self.s_sig
+
+        def left():
+            out = {"GS_b": G_bb @ S_b, "rhs": self.sens.rhs}                # (N, M), (N, D)
+            if dissipative:
+                out.update(A_old=self.A0 @ self.S_old,                      # (N, M)
+                           ES_b=E_bb @ S_b,                                 # (N, M)
+                           E_bb_sig=E_bb @ s_sig)                           # (N,)
+            return out
+
+        def right():
+            return {"At_old": self.A0.T @ self.hS_old,                      # (N, M)
+                    "hsE_old": E_bb.T @ self.hS_old,                        # (K, M)
+                    "hsig_E_bb": self.hsig @ E_bb,                          # (K,)
+                    "E_nb_sig": self.E_nb @ s_sig}                          # (Σn,)
+        products, transposed = pair(left, right) if dissipative else (left(), {})
+        self.GS_b, self.rhs = products["GS_b"], products["rhs"]
+        if dissipative:
+            self.A_old, self.ES_b = products["A_old"], products["ES_b"]
+            self.E_bb_sig = products["E_bb_sig"]
+            self.At_old, self.hsE_old = transposed["At_old"], transposed["hsE_old"]
+            self.hsig_E_bb, self.E_nb_sig = transposed["hsig_E_bb"], transposed["E_nb_sig"]
+
+    def _adjoints(self) -> None:
+        """The adjoints ``λₑ = Bₑ⁻ᵀψₑ`` of every enlarged field (through the Schur complement:
+        ``λ_n = S⁻ᵀ(ψ_n - Yᵀψ_b)``, ``λ_b = B⁻ᵀ(ψ_b - rᵀλ_n)``) and ``μ = B⁻ᵀΨ`` of the base
+        field, in one solve on the base factorisation; ``μᵀf`` and ``G_bbᵀλ_b``."""
+        sig, h, m = self.sig, self.h, len(self.edges)
+        lam_n, rhs_b = [], np.empty((len(sig), m))
+        for k, e in enumerate(self.edges):
+            b = e.border
+            h_n = b.right - b.left
+            psi_n = -0.5 * h_n * b.w_new
+            if self.dissipative:
+                cols, rows = b.cols, b.rows
+                assert cols is not None and rows is not None
+                psi_n = psi_n - 0.25 * (cols.T @ self.hsig - h_n * (rows @ sig))
+                a_e = self.A_old[:, k] + cols @ b.s_new
+                self.Psi[:, k] -= 0.25 * (h * a_e - (self.At_old[:, k]
+                                                     + rows.T @ (h_n * b.s_new)))
+            ln = lu_solve(b.schur, psi_n - b.Y.T @ self.psi_b, trans=1, check_finite=False)
+            lam_n.append(ln)
+            rhs_b[:, k] = self.psi_b - b.r.T @ ln
+        lam = self.sens.adjoint(np.column_stack([rhs_b, self.Psi]))        # (N, 2M)
+        self.lam_n = lam_n
+        self.lam_b, mu = lam[:, :m], lam[:, m:]
+        self.base, self.LG_b = pair(lambda: mu.T @ self.rhs,               # (M, D)
+                                    lambda: self.G_bb.T @ self.lam_b)       # (K, M)
+
+    def values(self) -> np.ndarray:
+        """The derivatives (M, D) of every advance's ``δŨ/δX̃ + δL̃_P/δX̃``."""
+        sens, sig, w, h = self.sens, self.sig, self.w, self.h
+        # the part of the explicit term that does not depend on the advance
+        explicit_base = 0.5 * (sens.width_vel.T @ (sig * w) + sens.w_vel.T @ (h * sig))
+        out = np.empty((len(self.edges), sens.n_dirs))
+        for k, e in enumerate(self.edges):
+            b = e.border
+            # its columns among all new nodes and its rows among all new collocation points
+            nb_ = slice(self.node_bounds[k], self.node_bounds[k + 1])
+            mb_ = slice(self.mid_bounds[k], self.mid_bounds[k + 1])
+            h_n = b.right - b.left
+            wv_n = sens.shape.slopes(e.mid)[:, None] * e.colloc_vel
+            wv_n[:, -1] = 1.0
+            explicit = (-0.5 * (sens.width_vel.T @ (b.s_old * w)
+                                + e.width_vel.T @ (b.s_new * b.w_new)
+                                + sens.w_vel.T @ (h * b.s_old) + wv_n.T @ (h_n * b.s_new))
+                        + explicit_base)
+            if self.dissipative:
+                explicit = explicit - 0.25 * self._dissipative_terms(k, e, nb_, mb_)
+            enlarged = self._enlarged(k, e, nb_, mb_, wv_n)
+            total = (b.d_u + b.d_lp) / e.dx
+            out[k] = (enlarged + self.base[k] + explicit) / e.dx - total * e.ddx / e.dx
+        return out
+
+    def _dissipative_terms(self, k: int, e: _Advance, nb_: slice, mb_: slice) -> np.ndarray:
+        """``T1 + T2 - T3 - T4`` (D,) of advance ``k``: the explicit derivatives of ``δL̃_P``'s
+        antisymmetric products ``(h̄σ̄)ᵀAₑσₑ - (hₑσₑ)ᵀAₑσ̄`` (the non-reciprocal part of the
+        kernel) at fixed stresses."""
+        sens, sig, h, hsig = self.sens, self.sig, self.h, self.hsig
+        b = e.border
+        cols, rows = b.cols, b.rows
+        assert cols is not None and rows is not None
+        h_n = b.right - b.left
+        s_old, s_new, s_b, s_n = b.s_old, b.s_new, e.s_b, e.s_n
+        e_bn, e_nb = self.E_bn[:, nb_], self.E_nb[mb_]
+        a_e = self.A_old[:, k] + cols @ s_new
+        # T1: ḣ on the base rows of (h̄σ̄)ᵀAₑσₑ
+        t1 = sens.width_vel.T @ (sig * a_e)
+        # T2: (h̄σ̄)ᵀ Ȧₑ σₑ (base rows, all nodes)
+        e_s = self.ES_b[:, k] + e_bn @ s_n
+        t2 = (sens.colloc_vel.T @ (hsig * e_s) - sens.node_vel.T @ (self.hsig_E_bb * s_b)
+              - e.node_vel.T @ ((hsig @ e_bn) * s_n))
+        # T3: ḣₑ in (hₑσₑ)ᵀAₑσ̄
+        t3 = (sens.width_vel.T @ (s_old * self.a_sig)
+              + e.width_vel.T @ (s_new * (rows @ sig)))
+        # T4: (hₑσₑ)ᵀ Ȧₑ σ̄ (all rows, base nodes only: σ̄ vanishes on the new elements)
+        hs_old, hs_new = h * s_old, h_n * s_new
+        t4 = (sens.colloc_vel.T @ (hs_old * self.E_bb_sig)
+              + e.colloc_vel.T @ (hs_new * self.E_nb_sig[mb_])
+              - sens.node_vel.T @ ((self.hsE_old[:, k] + hs_new @ e_nb) * self.s_sig))
+        return t1 + t2 - t3 - t4
+
+    def _enlarged(self, k: int, e: _Advance, nb_: slice, mb_: slice,
+                  wv_n: np.ndarray) -> np.ndarray:
+        """``λₑᵀ(ẇₑ - Ḃₑσₑ)`` (D,) of advance ``k`` (``wv_n``: ``ẇ`` on its new elements)."""
+        sens = self.sens
+        s_b, s_n = e.s_b, e.s_n
+        g_bn, g_nb, g_nn = self.G_bn[:, nb_], self.G_nb[mb_], self.G_nn[mb_, nb_]
+        lb, ln = self.lam_b[:, k], self.lam_n[k]
+        g_b = self.GS_b[:, k] + g_bn @ s_n
+        g_n = g_nb @ s_b + g_nn @ s_n
+        lg_b = self.LG_b[:, k] + ln @ g_nb
+        lg_n = lb @ g_bn + ln @ g_nn
+        b_e = (sens.colloc_vel.T @ (lb * g_b) + e.colloc_vel.T @ (ln * g_n)
+               - sens.node_vel.T @ (lg_b * s_b) - e.node_vel.T @ (lg_n * s_n))
+        return sens.w_vel.T @ lb + wv_n.T @ ln - b_e

@@ -156,6 +156,36 @@ def _theta_of(a: float, c: float) -> float:
     return min(2 * math.asin(math.sqrt(min(max(0.5 * one_minus, 0.0), 1.0))), _HALF_PI)
 
 
+def _area_and_angle(area, outer=None, zone_angle=None, required=True):
+    """``(a, θ)`` from ``Ã`` and either ``C̃`` or θ, checked (θ None when neither is given and
+    not ``required``).
+
+    Raises
+    ------
+    ValidationError
+        ``area`` outside ``(0, 2π)``, ``outer`` outside ``[area, 2π]`` or given with
+        ``zone_angle``, ``zone_angle`` outside ``[0, π/2]``, or neither given when ``required``.
+    """
+    a = 0.5 * float(area)
+    if not 0.0 < a < math.pi:
+        raise ValidationError("area", area, "a number in (0, 2π)")
+    if zone_angle is not None:
+        if outer is not None:
+            raise ValidationError("outer", outer, "None when zone_angle is given")
+        th = float(zone_angle)
+        if not 0.0 <= th <= _HALF_PI:
+            raise ValidationError("zone_angle", zone_angle, "a number in [0, π/2]")
+        return a, th
+    if outer is None:
+        if required:
+            raise ValidationError("outer", outer, "a number in [area, 2π] (or zone_angle)")
+        return a, None
+    c = 0.5 * float(outer)
+    if not a <= c <= math.pi:
+        raise ValidationError("outer", outer, f"a number in [area, 2π] = [{area}, 2π]")
+    return a, _theta_of(a, c)
+
+
 @attrs.frozen(kw_only=True)
 class MaugisDugdaleWavy:
     """Maugis–Dugdale adhesive contact of a rigid sinusoid on an elastic half-plane.
@@ -225,27 +255,6 @@ class MaugisDugdaleWavy:
     def _sigma(self) -> float:
         return self.cohesive_stress / self.modulus_ratio
 
-    def _check(self, area, outer=None, zone_angle=None, required=True):
-        """``(a, θ)`` from ``Ã`` and either ``C̃`` or θ (θ None when neither is given)."""
-        a = 0.5 * float(area)
-        if not 0.0 < a < math.pi:
-            raise ValidationError("area", area, "a number in (0, 2π)")
-        if zone_angle is not None:
-            if outer is not None:
-                raise ValidationError("outer", outer, "None when zone_angle is given")
-            th = float(zone_angle)
-            if not 0.0 <= th <= _HALF_PI:
-                raise ValidationError("zone_angle", zone_angle, "a number in [0, π/2]")
-            return a, th
-        if outer is None:
-            if required:
-                raise ValidationError("outer", outer, "a number in [area, 2π] (or zone_angle)")
-            return a, None
-        c = 0.5 * float(outer)
-        if not a <= c <= math.pi:
-            raise ValidationError("outer", outer, f"a number in [area, 2π] = [{area}, 2π]")
-        return a, _theta_of(a, c)
-
     def _slope(self, a, th, phi, to_theta):
         """``dg̃/dφ``; ``to_theta = θ - φ`` passed separately to keep it exact near φ = θ."""
         k = math.cos(a / 2)
@@ -276,20 +285,20 @@ class MaugisDugdaleWavy:
                       zone_angle: float | None = None) -> float:
         """``p̃∞ = β sin²(Ã/4) - (2σ̃0/π)θ`` for any contact ``Ã`` and outer length ``C̃`` (or
         zone angle θ), in equilibrium or not."""
-        a, th = self._check(area, outer, zone_angle)
-        return self.modulus_ratio * math.sin(a / 2) ** 2 - 2 * self.cohesive_stress * th / math.pi
+        a, th = _area_and_angle(area, outer, zone_angle)
+        return self._pressure(a, th)
 
     def zone_gap(self, area: float, outer: float | None = None, *,
                  zone_angle: float | None = None) -> float:
         """The gap ``g̃(c)`` at the end of the zone; equilibrium when it equals η (or, saturated,
         when ``C̃ = 2π`` and it is ``≤ η``)."""
-        a, th = self._check(area, outer, zone_angle)
+        a, th = _area_and_angle(area, outer, zone_angle)
         return self._gap_at(a, th, th)
 
     def penetration(self, area: float, outer: float | None = None, *,
                     zone_angle: float | None = None) -> float:
         """``Δ̃ = 1 - (1/π)∫_a^π g̃ dx̃``."""
-        a, th = self._check(area, outer, zone_angle)
+        a, th = _area_and_angle(area, outer, zone_angle)
         return self._penetration(a, th)
 
     def _penetration(self, a, th):
@@ -306,7 +315,7 @@ class MaugisDugdaleWavy:
     def stress(self, x, area: float, outer: float | None = None, *,
                zone_angle: float | None = None):
         """``σ̃(x̃)`` (tensile positive) on the period, for contact ``Ã`` and outer length ``C̃``."""
-        a, th = self._check(area, outer, zone_angle)
+        a, th = _area_and_angle(area, outer, zone_angle)
         x = np.abs(np.asarray(x, dtype=float))
         al2, k2a = math.sin(a / 2) ** 2, math.cos(a / 2) ** 2
         zone = np.cos(x / 2) >= math.cos(a / 2) * math.cos(th)         # φ(x̃) <= θ
@@ -324,7 +333,7 @@ class MaugisDugdaleWavy:
     def gap(self, x, area: float, outer: float | None = None, *,
             zone_angle: float | None = None):
         """Gap ``g̃(x̃)`` (``Λ`` units), zero in contact."""
-        a, th = self._check(area, outer, zone_angle)
+        a, th = _area_and_angle(area, outer, zone_angle)
         x = np.abs(np.asarray(x, dtype=float))
         out = np.zeros_like(x)
         for i, xi in np.ndenumerate(x):
@@ -380,12 +389,12 @@ class MaugisDugdaleWavy:
 
     def states(self, area: float) -> tuple[MDState, ...]:
         """Every equilibrium with contact length ``Ã``, by increasing zone (1 to 3 of them)."""
-        a, _ = self._check(area, required=False)
+        a, _ = _area_and_angle(area, required=False)
         return tuple(self._state(a, th) for th in self._thetas(a))
 
     def state(self, area: float) -> MDState:
         """The equilibrium of smallest zone at ``Ã`` (continuous with Johnson's JKR branch)."""
-        a, _ = self._check(area, required=False)
+        a, _ = _area_and_angle(area, required=False)
         return self._state(a, self._thetas(a, smallest_only=True)[0])
 
     def _partial_pressure(self, area):

@@ -133,13 +133,28 @@ def fit_prony(omega, storage, loss, *, times=None, n_per_decade: float = 1.0,
     True
     """
     w, e1, e2 = _data(omega, storage, loss)
+    problem = _Problem(w, e1, e2, _relaxed(relaxed_modulus))
+    e0, arms, tau = _best_fit(problem, w, times, n_per_decade, refine)
+    keep = arms > 0
+    return PronySeries(relaxed_modulus=e0, moduli=arms[keep], times=tau[keep],
+                       reference_time=reference_time)
+
+
+def _relaxed(relaxed_modulus) -> float | None:
+    """The imposed ``E0`` as a float (None: fitted), checked finite and > 0."""
     if relaxed_modulus is not None and not (np.isfinite(float(relaxed_modulus))
                                             and float(relaxed_modulus) > 0):
         raise ValidationError("fit_prony.relaxed_modulus", relaxed_modulus,
                               "a finite real number > 0, or None to fit it")
-    grids = [_grid(w, n_per_decade, shift=0.0)] if times is None else [_times(times)]
-    problem = _Problem(w, e1, e2, float(relaxed_modulus) if relaxed_modulus is not None else None)
+    return float(relaxed_modulus) if relaxed_modulus is not None else None
 
+
+def _best_fit(problem: "_Problem", w: np.ndarray, times, n_per_decade,
+              refine: bool) -> tuple[Any, np.ndarray, np.ndarray]:
+    """``(E0, E_i, τ_i)`` of the lowest misfit: NNLS on the grid of times (``times``, or the
+    default grid), refined when ``refine``; with the default grid, a refined misfit above
+    :data:`RETRY_ABOVE` is tried once more from the half-step-shifted grid."""
+    grids = [_grid(w, n_per_decade, shift=0.0)] if times is None else [_times(times)]
     best: tuple[float, Any, np.ndarray, np.ndarray] | None = None
     for tau in grids:
         e0, arms = problem.nnls(tau)
@@ -156,9 +171,7 @@ def fit_prony(omega, storage, loss, *, times=None, n_per_decade: float = 1.0,
             grids.append(_grid(w, n_per_decade, shift=0.5))
     assert best is not None, "at least one grid of times was tried"
     _, e0, arms, tau = best
-    keep = arms > 0
-    return PronySeries(relaxed_modulus=e0, moduli=arms[keep], times=tau[keep],
-                       reference_time=reference_time)
+    return e0, arms, tau
 
 
 def _grid(w: np.ndarray, n_per_decade, shift: float) -> np.ndarray:

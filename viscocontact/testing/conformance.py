@@ -115,6 +115,19 @@ def check_profile(profile: Any, *, registered: bool = True, rtol: float = 1e-6) 
     _check_frozen(profile, name)
     _check_hashable(profile, name)
 
+    x, r, s = _profile_samples(profile, name)
+    scale = max(float(np.max(np.abs(r))), 1e-300)
+    sscale = max(float(np.max(np.abs(s))), scale)
+    _check_periodic_zero_mean(profile, x, r, s, scale, sscale, name)
+    _check_slopes(profile, x, s, sscale, rtol, name)
+    top = _check_peak(profile, scale, rtol, name)
+    _check_statistics(profile, top, rtol, name)
+    _check_round_trip("profile", profile, name, registered)
+
+
+def _profile_samples(profile: Any, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(x, heights, slopes)`` at 4096 points over a period, checked to keep the shape of
+    ``x`` (also 2-d) and to be finite."""
     n = 1 << 12
     x = np.linspace(0.0, TWO_PI, n, endpoint=False) + 0.1234
     r = np.asarray(profile.heights(x), dtype=float)
@@ -126,9 +139,12 @@ def check_profile(profile: Any, *, registered: bool = True, rtol: float = 1e-6) 
     x2 = x.reshape(64, -1)
     if np.asarray(profile.heights(x2)).shape != x2.shape:
         _fail(name, "heights are not vectorised over 2-d arrays")
-    scale = max(float(np.max(np.abs(r))), 1e-300)
-    sscale = max(float(np.max(np.abs(s))), scale)
+    return x, r, s
 
+
+def _check_periodic_zero_mean(profile: Any, x, r, s, scale: float, sscale: float,
+                              name: str) -> None:
+    """Heights and slopes repeat over 2π; the heights' mean over the period is zero."""
     for shift in (TWO_PI, -TWO_PI, 3 * TWO_PI):
         err = _max_rel(profile.heights(x + shift), r, scale)
         if err > 1e-9:
@@ -141,6 +157,9 @@ def check_profile(profile: Any, *, registered: bool = True, rtol: float = 1e-6) 
     if mean > 1e-8 * scale:
         _fail(name, f"heights must have zero mean over the period: mean = {mean:.3g}")
 
+
+def _check_slopes(profile: Any, x, s, sscale: float, rtol: float, name: str) -> None:
+    """The slopes are the heights' derivative (4th-order central differences) within ``rtol``."""
     h = 1e-4
     fd = (-profile.heights(x + 2 * h) + 8 * profile.heights(x + h) - 8 * profile.heights(x - h)
           + profile.heights(x - 2 * h)) / (12 * h)
@@ -151,19 +170,32 @@ def check_profile(profile: Any, *, registered: bool = True, rtol: float = 1e-6) 
                     f"{s[i]:.10g} vs finite difference {fd[i]:.10g} (relative error {err:.3g} > "
                     f"{rtol:g})")
 
+
+def _check_peak(profile: Any, scale: float, rtol: float, name: str) -> float:
+    """``peak()`` lies in the period, is the global maximum (on 32768 points) and is the
+    ``amplitude``; returns the peak height."""
     xp, top = profile.peak()
     if not (0.0 <= xp < TWO_PI):
         _fail(name, f"peak() position {xp!r} is not in [0, 2π)")
     if abs(float(profile.heights(np.asarray(xp))) - top) > 1e-9 * scale:
         _fail(name, f"peak() value {top!r} != heights(x_peak) = {float(profile.heights(xp))!r}")
-    fine = np.linspace(0.0, TWO_PI, 1 << 15, endpoint=False)
-    rmax = float(np.max(profile.heights(fine)))
+    rmax = float(np.max(profile.heights(_fine_grid())))
     if rmax > top * (1 + rtol) + 1e-12 * scale:
         _fail(name, f"peak() value {top!r} is not the maximum: heights reach {rmax!r}")
     amplitude = float(profile.amplitude)
     if abs(amplitude - top) > rtol * abs(top):
         _fail(name, f"amplitude {amplitude!r} must equal the peak height Λ̃ = q0·max r = {top!r}")
+    return top
 
+
+def _fine_grid() -> np.ndarray:
+    """32768 points over the period, for the peak and the sampled moments."""
+    return np.linspace(0.0, TWO_PI, 1 << 15, endpoint=False)
+
+
+def _check_statistics(profile: Any, top: float, rtol: float, name: str) -> None:
+    """``statistics()`` is finite, its moments are >= 0 and agree with the sampled means of
+    the squared heights and slopes, ``rms = √m0`` and its amplitude is the peak height ``top``."""
     stats = profile.statistics()
     values = attrs.asdict(stats)
     bad = {k: v for k, v in values.items() if not np.isfinite(v)}
@@ -173,6 +205,7 @@ def check_profile(profile: Any, *, registered: bool = True, rtol: float = 1e-6) 
         _fail(name, f"spectral moments must be >= 0: {values}")
     if abs(stats.rms - np.sqrt(stats.m0)) > 1e-6 * max(stats.rms, 1e-300):
         _fail(name, f"statistics().rms = {stats.rms!r} != sqrt(m0) = {np.sqrt(stats.m0)!r}")
+    fine = _fine_grid()
     sf = np.asarray(profile.slopes(fine))
     rf = np.asarray(profile.heights(fine))
     for key, sample in (("m0", np.mean(rf**2)), ("m2", np.mean(sf**2))):
@@ -181,8 +214,6 @@ def check_profile(profile: Any, *, registered: bool = True, rtol: float = 1e-6) 
             _fail(name, f"statistics().{key} = {got!r} disagrees with the sampled mean {sample!r}")
     if abs(stats.amplitude - top) > rtol * abs(top):
         _fail(name, f"statistics().amplitude = {stats.amplitude!r} != peak height {top!r}")
-
-    _check_round_trip("profile", profile, name, registered)
 
 
 def check_rheology(rheology: Any, *, registered: bool = True, rtol: float = 1e-8) -> None:

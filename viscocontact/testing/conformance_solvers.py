@@ -144,6 +144,20 @@ def check_solver(solver: NonlinearSolver, *, honours_max_step: bool = True,
         Naming the case and the failed property.
     """
     name = f"check_solver({type(solver).__qualname__})"
+    _check_component(solver, name)
+    case_list = list(standard_cases() if cases is None else cases)
+    _check_cases(solver, case_list, honours_max_step, name)
+    _check_deterministic(solver, case_list[0], name)
+    _check_start_at_root(solver, case_list[0], name)
+    _check_no_root(solver, name)
+    hard = next((c for c in case_list if c.x0.size > 1), case_list[0])
+    _check_budgets(solver, hard, name)
+    _check_exceptions_propagate(solver, hard, name)
+
+
+def _check_component(solver: Any, name: str) -> None:
+    """A :class:`~viscocontact.solvers.base.NonlinearSolver` and a frozen, hashable attrs
+    value."""
     if not isinstance(solver, NonlinearSolver):
         _fail(name, "not a subclass of viscocontact.solvers.base.NonlinearSolver")
     if attrs.has(type(solver)):
@@ -152,7 +166,11 @@ def check_solver(solver: NonlinearSolver, *, honours_max_step: bool = True,
         _fail(name, f"{type(solver).__qualname__} is not an attrs class (solvers are frozen "
                     "attrs classes, keyword-only)")
 
-    case_list = list(standard_cases() if cases is None else cases)
+
+def _check_cases(solver, case_list: list[SolverCase], honours_max_step: bool,
+                 name: str) -> None:
+    """Every case converges near its root with a consistent result (and, when the solver
+    honours it, within the problem's ``max_step``)."""
     for case in case_list:
         try:
             res, rec = _run(solver, case)
@@ -170,15 +188,18 @@ def check_solver(solver: NonlinearSolver, *, honours_max_step: bool = True,
         if honours_max_step and hasattr(case.problem, "max_step"):
             _check_max_step(rec, case, name)
 
-    # determinism: a solver is a value, solving twice gives the same answer
-    case = case_list[0]
+
+def _check_deterministic(solver, case: SolverCase, name: str) -> None:
+    """A solver is a value: solving twice gives the same answer."""
     first, _ = _run(solver, case)
     second, _ = _run(solver, case)
     if not (np.array_equal(first.x, second.x)
             and first.function_evaluations == second.function_evaluations):
         _fail(name, f"case {case.name!r}: two identical solves differ (hidden state?)")
 
-    # started at the root
+
+def _check_start_at_root(solver, case: SolverCase, name: str) -> None:
+    """Started at the root, the solver converges in 0 iterations."""
     at_root = attrs.evolve(case, x0=case.root)
     res, rec = _run(solver, at_root)
     _check_result(res, at_root, rec, at_root.tolerances, name, "start at the root")
@@ -186,15 +207,18 @@ def check_solver(solver: NonlinearSolver, *, honours_max_step: bool = True,
         _fail(name, f"start at the root: converged = {res.converged}, iterations = "
                     f"{res.iterations} (expected True, 0)")
 
-    # no root: never claim convergence
+
+def _check_no_root(solver, name: str) -> None:
+    """A problem without a root is never reported converged."""
     nr = no_root_case()
     res, rec = _run(solver, nr)
     _check_result(res, nr, rec, nr.tolerances, name, "no-root problem r = x² + 1")
     if res.converged or res.status is Status.CONVERGED:
         _fail(name, "no-root problem r = x² + 1 reported as converged")
 
-    # budgets
-    hard = next((c for c in case_list if c.x0.size > 1), case_list[0])
+
+def _check_budgets(solver, hard: SolverCase, name: str) -> None:
+    """``max_iterations = 1`` and ``max_evaluations = 3`` are respected on ``hard``."""
     for tol in (attrs.evolve(hard.tolerances, max_iterations=1),
                 attrs.evolve(hard.tolerances, max_evaluations=3)):
         res, rec = _run(solver, hard, tol)
@@ -202,7 +226,10 @@ def check_solver(solver: NonlinearSolver, *, honours_max_step: bool = True,
                       f"case {hard.name!r} with max_iterations = {tol.max_iterations}, "
                       f"max_evaluations = {tol.max_evaluations}")
 
-    # exceptions from residual propagate unchanged
+
+def _check_exceptions_propagate(solver, hard: SolverCase, name: str) -> None:
+    """An exception raised by ``residual`` at the 1st, 2nd, 4th or 7th call propagates
+    unchanged (neither replaced nor swallowed)."""
     for k in (1, 2, 4, 7):
         rec = RecordingProblem(hard.problem, fail_at=k)
         try:
