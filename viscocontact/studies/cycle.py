@@ -51,8 +51,9 @@ import numpy as np
 from ..errors import ValidationError
 from ..problem import Discretization
 from ..scene import Scene
+from ..methods.bem.approach import ContinueFrom
 from .base import (Chain, Study, adhesion_gamma, check_scene, int_list, real_list, scene_variant,
-                   secant_start, starting_point)
+                   starting_point)
 from .point import ERROR, PointSpec, has_contact
 from .sweep import ADHESIONLESS, ADHESIVE, _discretization
 
@@ -240,8 +241,10 @@ class Cycle(Study):
         anchor = next((r for r in reversed(records) if has_contact(r)), None)
         started_from, initial = starting_point(anchor, target)
         if initial is not None and initial.size:
-            predicted = secant_start(records, "target", target, phase=phase)
-            initial = initial if predicted is None else predicted
+            # the branch through the neighbour's equilibrium, followed to this penetration with
+            # its events located (the approach's continuation): the values recorded do not
+            # depend on the cycle's step
+            initial = ContinueFrom(initial, anchor["target"])
         spec = PointSpec(chain=chain.index, step=k, phase=phase, started_from=started_from,
                          history={"name": "cycle"},
                          fields=self.fields, labels=dict(chain.labels),

@@ -140,7 +140,7 @@ class PointSpec:
 
 
 def solve_point(scene: Mapping[str, Any], spec: PointSpec,
-                initial: np.ndarray | None = None,
+                initial=None,
                 time_limit: float | None = None) -> dict[str, Any]:
     """Solve one point; never raises for a failing solve.
 
@@ -149,9 +149,11 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
     scene : dict
         The full scene of this point (``Scene.to_dict()`` form, with its own ζ and load).
     spec : PointSpec
-    initial : ndarray or None
+    initial : ndarray, ContinueFrom or None
         Contact set to start from, shape ``(n, 2)`` or flat ``(2n,)``; an empty array starts from
-        no contact, ``None`` follows the approach path from first touch.
+        no contact, ``None`` follows the approach path from first touch; a
+        :class:`~viscocontact.methods.bem.approach.ContinueFrom` continues the branch through a
+        neighbour's equilibrium (a cycle's points).
     time_limit : float or None
         Seconds of wall time after which the solve is abandoned and the point recorded as an
         error with the reason ("TimeLimitExceeded: time limit of ... s reached"). The limit is a
@@ -277,7 +279,8 @@ def _reached(problem, spec: PointSpec, initial):
     if spec.history.get("name") == SPEED_RAMP:
         result = _ramped(problem, history(dict(spec.history)), spec, path)
         return result, spec.started_from, path
-    start = None if initial is None else np.asarray(initial, dtype=float).reshape(-1)
+    start = (initial if initial is None or hasattr(initial, "penetration")
+             else np.asarray(initial, dtype=float).reshape(-1))
     result = _solve_at(problem, None, start, fields=spec.fields)
     if result.converged or spec.started_from != NEIGHBOUR:
         return result, spec.started_from, path

@@ -71,6 +71,19 @@ class ApproachOptions:
         return self.path_step * self.resolution
 
 
+@attrs.frozen
+class ContinueFrom:
+    """An initial state that asks a solve to continue the branch through a known equilibrium:
+    the equilibrium at ``edges`` under its own penetration ``penetration`` (a neighbouring
+    point of a cycle), followed to the problem's target with its events located, as the
+    approach follows it from first touch (:meth:`Approach.continued`). Pass it as
+    ``ContactProblem.solve(initial=ContinueFrom(edges, penetration))``; other methods start
+    from its ``edges``."""
+
+    edges: np.ndarray = attrs.field(converter=lambda v: np.asarray(v, dtype=float).ravel())
+    penetration: float = attrs.field(converter=float)
+
+
 def _record(log, kind: str, **values) -> None:
     """A typed event in the solve's log (``log.records``) and its prose (``log.events``)."""
     log.records.append({"kind": kind, **{k: float(v) for k, v in values.items()}})
@@ -210,6 +223,19 @@ class Approach:
             x = np.array([centre - half, centre + half])
         return x
 
+    def continued(self, start: ContinueFrom, target: Control) -> State:
+        """The branch through the equilibrium at ``start`` followed to ``target`` (its events
+        located, as from first touch): the equilibrium is solved again at its own penetration
+        (where it converges at once), then climbed from. Where it is not an equilibrium there,
+        the solve says so."""
+        at = Control.penetration_of(start.penetration)
+        state = self.eq.solve(start.edges, at) if start.edges.size else self.run(at)
+        if state.outcome is Outcome.FULL_CONTACT:
+            return self.from_full_contact(target)
+        if not state.converged or self.reached(state, target):
+            return state
+        return self.climb(state, target)
+
     def from_full_contact(self, target: Control) -> State:
         """Continue from a closed contact. With infinitely short-range adhesion a closed
         interface has no flaw to open from (the energy release of a vanishing gap is zero), so
@@ -264,4 +290,4 @@ class Approach:
         return landing
 
 
-__all__ = ["Approach", "ApproachOptions"]
+__all__ = ["Approach", "ApproachOptions", "ContinueFrom"]

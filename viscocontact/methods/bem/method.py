@@ -27,7 +27,7 @@ from .closed import ClosedContact
 from .equilibrium import Equilibrium
 from .estimate import estimate
 from .meshing import MeshPolicy, mesh_spec
-from .approach import Approach, ApproachOptions
+from .approach import Approach, ApproachOptions, ContinueFrom
 from .path import Path
 from .relax import RelaxFrom, Relaxation
 from .sets import Control
@@ -104,6 +104,8 @@ class Solve:
             # with slivers of gap at the solver's tolerance)
             self.log.event("the closed contact carries the load without tension")
             out = State.full_contact()
+        elif isinstance(initial, ContinueFrom):
+            out = self.approach.continued(initial, target)
         elif isinstance(initial, RelaxFrom):
             out = Relaxation(self.equilibrium, self.closed, initial.tolerance).run(
                 initial.edges, target)
