@@ -110,6 +110,34 @@ def test_an_unwritable_output_folder_is_said_before_computing(tmp_path, capsys, 
     assert not list(locked.iterdir())
 
 
+@pytest.mark.parametrize("command", [["validate", "--quick"], ["bench", "--quick"],
+                                     ["study", "--quiet"]])
+def test_a_folder_the_permissions_allow_but_the_file_system_refuses_is_said_before_computing(
+        tmp_path, capsys, monkeypatch, command):
+    """A read-only or virtual file system (``/proc`` for root) passes a permission check; the
+    folder is tried (made and removed) before anything is computed. Before, ``validate`` computed
+    its cases and then failed with "no such file"."""
+    import errno
+
+    from viscocontact import _outputs
+
+    def refused(**kwargs):
+        raise OSError(errno.EROFS, "Read-only file system")
+
+    monkeypatch.setattr(_outputs.tempfile, "mkdtemp", refused)
+    assert main([*command, "--out", str(tmp_path / "new")]) == 2
+    err = _one_line(capsys)
+    assert "--out" in err and f"cannot write in {tmp_path}: Read-only file system" in err
+    assert not list(tmp_path.iterdir())
+
+
+def test_checking_a_folder_leaves_nothing_behind(tmp_path):
+    from viscocontact._outputs import check_folder
+
+    assert check_folder("--out", tmp_path / "a" / "b", "a folder") == tmp_path / "a" / "b"
+    assert not list(tmp_path.iterdir())
+
+
 def test_validate_needs_an_out_folder_outside_a_source_tree(tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert main(["validate", "--quick"]) == 2
