@@ -121,3 +121,14 @@ def test_the_changelog_has_one_short_entry_per_change():
     assert len(entries) > 10
     long = [e[:80] for e in entries if len(e) > 300]
     assert not long, long
+
+
+#: Ã is the contact length times q0 (2π in full contact), not a fraction of the period.
+AREA_AS_FRACTION = r"fraction\s+Ã(?!\s*/\s*2π)|Ã\s*(?:=|is|,)?\s*(?:the\s+)?(?:contact\s+)?area\s+fraction"
+
+
+@pytest.mark.parametrize("page", [*_pages(), DOCS.parent / "README.md"],
+                         ids=lambda p: p.relative_to(DOCS.parent).as_posix())
+def test_no_page_calls_the_contact_length_a_fraction(page):
+    found = re.findall(AREA_AS_FRACTION, page.read_text())
+    assert not found, f"{page.name}: {found}"
