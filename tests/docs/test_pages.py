@@ -132,3 +132,8 @@ AREA_AS_FRACTION = r"fraction\s+Ã(?!\s*/\s*2π)|Ã\s*(?:=|is|,)?\s*(?:the\s+)?(
 def test_no_page_calls_the_contact_length_a_fraction(page):
     found = re.findall(AREA_AS_FRACTION, page.read_text())
     assert not found, f"{page.name}: {found}"
+
+
+def test_the_si_how_to_reads_results_back_in_si():
+    text = (DOCS / "howto" / "si-units.md").read_text()
+    assert ".physical(scene)" in text and "--si" in text
