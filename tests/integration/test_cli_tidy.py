@@ -30,10 +30,12 @@ cohesive_range = 1e-7
 """
 
 
-def test_a_sweep_of_an_si_maugis_dugdale_scene_runs_with_the_defaults(tmp_path):
-    """The adhesionless twin drops ``physical.cohesive_range`` with the work of adhesion."""
+@pytest.mark.parametrize("key", ["cohesive_range = 1e-7", "cohesive_strength = 1e5"])
+def test_a_sweep_of_an_si_maugis_dugdale_scene_runs_with_the_defaults(tmp_path, key):
+    """The adhesionless twin drops ``physical.cohesive_range`` (or ``cohesive_strength``) with
+    the work of adhesion."""
     scene = tmp_path / "md.toml"
-    scene.write_text(MD_SI)
+    scene.write_text(MD_SI.replace("cohesive_range = 1e-7", key))
     out = tmp_path / "md_sweep.h5"
     assert main(["sweep", str(scene), "--zetas", "10", "--elements", "16", "--quiet",
                  "--out", str(out)]) == 0
