@@ -124,7 +124,8 @@ def test_the_changelog_has_one_short_entry_per_change():
 
 
 #: Ã is the contact length times q0 (2π in full contact), not a fraction of the period.
-AREA_AS_FRACTION = r"fraction\s+Ã(?!\s*/\s*2π)|Ã\s*(?:=|is|,)?\s*(?:the\s+)?(?:contact\s+)?area\s+fraction"
+AREA_AS_FRACTION = (r"fraction\s+Ã(?!\s*/\s*2π)"
+                    r"|Ã\s*(?:=|is|,)?\s*(?:the\s+)?(?:contact\s+)?area\s+fraction")
 
 
 @pytest.mark.parametrize("page", [*_pages(), DOCS.parent / "README.md"],
