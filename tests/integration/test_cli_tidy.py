@@ -133,6 +133,28 @@ def test_a_folder_the_permissions_allow_but_the_file_system_refuses_is_said_befo
     assert not list(tmp_path.iterdir())
 
 
+def test_solve_plot_into_a_folder_that_refuses_is_said_before_solving(tmp_path, capsys,
+                                                                     monkeypatch):
+    import errno
+
+    from viscocontact import _outputs
+    from viscocontact.problem import ContactProblem
+
+    def refused(**kwargs):
+        raise OSError(errno.EROFS, "Read-only file system")
+
+    def not_to_be_solved(*args, **kwargs):
+        raise AssertionError("solved before the --plot file was checked")
+
+    monkeypatch.setattr(_outputs.tempfile, "mkdtemp", refused)
+    monkeypatch.setattr(ContactProblem, "solve", not_to_be_solved)
+    scene = tmp_path / "md.toml"
+    scene.write_text(MD_SI)
+    assert main(["solve", str(scene), "--plot", str(tmp_path / "f.png")]) == 2
+    err = _one_line(capsys)
+    assert "--plot" in err and f"cannot write in {tmp_path}: Read-only file system" in err
+
+
 def test_checking_a_folder_leaves_nothing_behind(tmp_path):
     from viscocontact._outputs import check_folder
 
