@@ -3,6 +3,7 @@ says so at once, not after the computation (nor as a "no such file")."""
 from __future__ import annotations
 
 import os
+import tempfile
 from pathlib import Path
 
 from .errors import ValidationError
@@ -12,7 +13,9 @@ def check_folder(option: str, name, what: str) -> Path:
     """The folder ``name`` to write into (made later if missing), checked now.
 
     It must not be a file nor lie below one, and the folder itself or, when missing, its
-    nearest existing parent must be writable by this process. Raises :class:`ValidationError`
+    nearest existing parent must be writable by this process: the permission bits allow it and
+    a folder can be made there (and is removed at once), which also catches what the bits do not
+    show (a read-only or virtual file system, a full disk). Raises :class:`ValidationError`
     naming ``option`` otherwise; returns the path.
     """
     path = Path(name)
@@ -23,5 +26,10 @@ def check_folder(option: str, name, what: str) -> Path:
             if not os.access(folder, os.W_OK | os.X_OK):
                 raise ValidationError(option, str(name),
                                       f"{what} (no permission to write in {folder})")
+            try:
+                os.rmdir(tempfile.mkdtemp(prefix=".viscocontact-check-", dir=folder))
+            except OSError as exc:
+                raise ValidationError(option, str(name), f"{what} (cannot write in {folder}: "
+                                      f"{exc.strerror or exc})") from None
             break
     return path

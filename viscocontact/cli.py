@@ -263,14 +263,22 @@ def _solve_areal(args: argparse.Namespace, scene) -> int:
 
 
 def _check_plot(name: str | None) -> None:
-    """``--plot FILE.png``: a file name in an existing folder (said before solving)."""
+    """``--plot FILE.png``: a file name in an existing folder this process can write in (said
+    before solving)."""
     from pathlib import Path
+
+    from ._outputs import check_folder
 
     if name is None:
         return
     path = Path(name)
+    what = "a PNG file name in an existing folder"
     if path.is_dir() or not path.parent.is_dir():
-        raise ValidationError("--plot", name, "a PNG file name in an existing folder")
+        raise ValidationError("--plot", name, what)
+    try:
+        check_folder("--plot", path.parent, what)
+    except ValidationError as exc:
+        raise ValidationError("--plot", name, exc.allowed) from None
 
 
 #: SI units of ``solve --si`` (:class:`~viscocontact.units.PhysicalResult`).

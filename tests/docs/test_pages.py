@@ -121,3 +121,43 @@ def test_the_changelog_has_one_short_entry_per_change():
     assert len(entries) > 10
     long = [e[:80] for e in entries if len(e) > 300]
     assert not long, long
+
+
+#: Ã is the contact length times q0 (2π in full contact), not a fraction of the period.
+AREA_AS_FRACTION = (r"fraction\s+Ã(?!\s*/\s*2π)"
+                    r"|Ã\s*(?:=|is|,)?\s*(?:the\s+)?(?:contact\s+)?area\s+fraction")
+
+
+@pytest.mark.parametrize("page", [*_pages(), DOCS.parent / "README.md"],
+                         ids=lambda p: p.relative_to(DOCS.parent).as_posix())
+def test_no_page_calls_the_contact_length_a_fraction(page):
+    found = re.findall(AREA_AS_FRACTION, page.read_text())
+    assert not found, f"{page.name}: {found}"
+
+
+def test_the_si_how_to_reads_results_back_in_si():
+    text = (DOCS / "howto" / "si-units.md").read_text()
+    assert ".physical(scene)" in text and "--si" in text
+
+
+def test_the_tutorials_shown_cells_run_on_their_own():
+    """A reader pastes the cells that are shown: none may use a name that only a hidden set-up
+    cell (``remove-cell``) defines (the page's closing timing cell excepted)."""
+    import ast
+    import builtins
+
+    text = (DOCS / "getting-started.md").read_text().split("## How long this page takes")[0]
+    bound = set(dir(builtins))
+    for cell in re.findall(r"```\{code-cell\} ipython3\n(.*?)```", text, flags=re.S):
+        if "remove-cell" in cell.split("\n\n")[0]:
+            continue
+        tree = ast.parse(cell)
+        here = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)
+                and isinstance(n.ctx, ast.Store)}
+        here |= {(a.asname or a.name).split(".")[0] for n in ast.walk(tree)
+                 if isinstance(n, (ast.Import, ast.ImportFrom)) for a in n.names}
+        used = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)
+                and isinstance(n.ctx, ast.Load)}
+        missing = used - bound - here
+        assert not missing, f"{sorted(missing)} in: {cell[:60]!r}"
+        bound |= here

@@ -30,10 +30,12 @@ cohesive_range = 1e-7
 """
 
 
-def test_a_sweep_of_an_si_maugis_dugdale_scene_runs_with_the_defaults(tmp_path):
-    """The adhesionless twin drops ``physical.cohesive_range`` with the work of adhesion."""
+@pytest.mark.parametrize("key", ["cohesive_range = 1e-7", "cohesive_strength = 1e5"])
+def test_a_sweep_of_an_si_maugis_dugdale_scene_runs_with_the_defaults(tmp_path, key):
+    """The adhesionless twin drops ``physical.cohesive_range`` (or ``cohesive_strength``) with
+    the work of adhesion."""
     scene = tmp_path / "md.toml"
-    scene.write_text(MD_SI)
+    scene.write_text(MD_SI.replace("cohesive_range = 1e-7", key))
     out = tmp_path / "md_sweep.h5"
     assert main(["sweep", str(scene), "--zetas", "10", "--elements", "16", "--quiet",
                  "--out", str(out)]) == 0
@@ -108,6 +110,56 @@ def test_an_unwritable_output_folder_is_said_before_computing(tmp_path, capsys, 
     err = _one_line(capsys)
     assert "--out" in err and f"no permission to write in {locked}" in err
     assert not list(locked.iterdir())
+
+
+@pytest.mark.parametrize("command", [["validate", "--quick"], ["bench", "--quick"],
+                                     ["study", "--quiet"]])
+def test_a_folder_the_permissions_allow_but_the_file_system_refuses_is_said_before_computing(
+        tmp_path, capsys, monkeypatch, command):
+    """A read-only or virtual file system (``/proc`` for root) passes a permission check; the
+    folder is tried (made and removed) before anything is computed. Before, ``validate`` computed
+    its cases and then failed with "no such file"."""
+    import errno
+
+    from viscocontact import _outputs
+
+    def refused(**kwargs):
+        raise OSError(errno.EROFS, "Read-only file system")
+
+    monkeypatch.setattr(_outputs.tempfile, "mkdtemp", refused)
+    assert main([*command, "--out", str(tmp_path / "new")]) == 2
+    err = _one_line(capsys)
+    assert "--out" in err and f"cannot write in {tmp_path}: Read-only file system" in err
+    assert not list(tmp_path.iterdir())
+
+
+def test_solve_plot_into_a_folder_that_refuses_is_said_before_solving(tmp_path, capsys,
+                                                                     monkeypatch):
+    import errno
+
+    from viscocontact import _outputs
+    from viscocontact.problem import ContactProblem
+
+    def refused(**kwargs):
+        raise OSError(errno.EROFS, "Read-only file system")
+
+    def not_to_be_solved(*args, **kwargs):
+        raise AssertionError("solved before the --plot file was checked")
+
+    monkeypatch.setattr(_outputs.tempfile, "mkdtemp", refused)
+    monkeypatch.setattr(ContactProblem, "solve", not_to_be_solved)
+    scene = tmp_path / "md.toml"
+    scene.write_text(MD_SI)
+    assert main(["solve", str(scene), "--plot", str(tmp_path / "f.png")]) == 2
+    err = _one_line(capsys)
+    assert "--plot" in err and f"cannot write in {tmp_path}: Read-only file system" in err
+
+
+def test_checking_a_folder_leaves_nothing_behind(tmp_path):
+    from viscocontact._outputs import check_folder
+
+    assert check_folder("--out", tmp_path / "a" / "b", "a folder") == tmp_path / "a" / "b"
+    assert not list(tmp_path.iterdir())
 
 
 def test_validate_needs_an_out_folder_outside_a_source_tree(tmp_path, capsys, monkeypatch):

@@ -32,6 +32,7 @@ from typing import ClassVar
 import attrs
 import numpy as np
 
+from .._events import EventList
 from .._validation import in_range, int_range
 from ..errors import ValidationError
 from ..kernels.clausen import TWO_PI
@@ -232,7 +233,8 @@ class ArealSpectral:
         amplitude = float(fine.max())
         if not amplitude > 0:
             raise ValidationError("ArealProblem.surface", "a flat surface", "heights with a peak")
-        extras: dict = {"method": self.name, "events": [], "grids": [], "seconds": 0.0}
+        events: list[str] = EventList(self.name)       # logged as they happen
+        extras: dict = {"method": self.name, "events": events, "grids": [], "seconds": 0.0}
         common: dict = dict(zeta=float(problem.zeta), edge_perturbation=0.0, extras=extras)
         load, pen = problem.mean_pressure, problem.penetration
         law = self.law(problem, amplitude)

@@ -80,6 +80,25 @@ CF_ATTRS = {
     "gamma": ("γ̃, work of adhesion (0: adhesionless)", "1"),
     "seed": ("profile seed (-1: the scene's profile)", "1"),
     "step": ("step along the cycle", "1"),
+    "residual": ("largest edge residual at the end", "1"),
+    "iterations": ("solver iterations", "1"),
+    "function_evaluations": ("residual evaluations", "1"),
+    "edge_perturbation": ("edge advance q0 δX of the energy balance", "1"),
+    "error_estimate": ("estimated relative discretisation error of Ã and μ", "1"),
+    "certified_area": ("Ã of the certifying run (2π: full contact)", "1"),
+    "certified_friction": ("μ of the certifying run", "1"),
+    # areal scenes (NaN or -1 for a profile)
+    "area_fraction": ("contact area fraction A/A0", "1"),
+    "mean_gap": ("mean gap over the cell g̃ (units of Λ)", "1"),
+    "dissipated_power": ("dissipated power −<p ∂u/∂s> per unit area and sliding speed", "1"),
+    "friction_dissipation": ("friction coefficient from the dissipated power", "1"),
+    "patch_mean_area": ("mean contact patch area (q0² × area)", "1"),
+    "patch_largest_area": ("largest contact patch area (q0² × area)", "1"),
+    "patch_elongation": ("patch elongation √(λmax/λmin), area-weighted (1: round)", "1"),
+    "patch_orientation": ("patch axis angle from the sliding direction, area-weighted", "rad"),
+    "patch_alignment": ("patch alignment with the sliding direction (+1 along, −1 across)", "1"),
+    "percolating": ("patches that wrap around the cell", "1"),
+    "cells_per_zone": ("finest-grid cells per cohesive zone", "1"),
 }
 
 

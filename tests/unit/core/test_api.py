@@ -127,3 +127,29 @@ def test_the_cli_shows_the_events_with_v(tmp_path, capsys):
     assert "viscocontact: auto: method spectral" in err and "viscocontact: spectral: [" in err
     assert main(["solve", str(scene)]) == 0
     assert capsys.readouterr().err == ""
+
+
+def test_an_areal_solve_logs_its_grids_as_it_goes():
+    """The areal method's events (one per grid of its ladder) are logged when they happen too,
+    so that ``viscocontact -v solve`` shows a long areal solve's progress."""
+    import numpy as np
+
+    from viscocontact.areal.method import ArealSpectral
+    from viscocontact.areal.problem import ArealProblem
+
+    x = np.arange(64) * 2 * np.pi / 64
+    h = np.cos(x)[None, :] + 0.5 * np.cos(x)[:, None]
+    log, handler = logging.getLogger("viscocontact.solve"), _Records()
+    log.addHandler(handler)
+    level = log.level
+    log.setLevel(logging.INFO)
+    try:
+        result = ArealSpectral().solve(ArealProblem(surface=h, rheology=vc.Elastic(),
+                                                    mean_pressure=0.3))
+    finally:
+        log.removeHandler(handler)
+        log.setLevel(level)
+    assert result.converged and result.extras["events"]
+    logged = [r.getMessage() for r in handler.records if r.funcName == "append"]
+    assert [m.split("] ", 1)[1] for m in logged] == result.extras["events"]
+    assert all(m.startswith("areal-spectral: [") for m in logged)

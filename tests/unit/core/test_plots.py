@@ -44,9 +44,12 @@ def test_drawing_keeps_the_callers_backend_and_figures(tmp_path):
         assert (tmp_path / name).read_bytes()[:8] == PNG
 
 
-def test_plot_study_writes_pngs_and_leaves_pyplot_alone(tmp_path):
+def test_plot_study_writes_pngs_and_leaves_pyplot_alone(tmp_path, monkeypatch):
+    """... and each figure names its scene (the file, β, p̃∞; Γ̃ when adhesive) and labels Ã
+    with the value of full contact (2π)."""
     import matplotlib
 
+    from viscocontact import plots
     from viscocontact.plots import plot_study
     from viscocontact.scene import Scene
     from viscocontact.studies import Sweep, run
@@ -56,8 +59,16 @@ def test_plot_study_writes_pngs_and_leaves_pyplot_alone(tmp_path):
     backend = matplotlib.get_backend()
     pyplot = sys.modules.get("matplotlib.pyplot")
     open_figures = pyplot.get_fignums() if pyplot is not None else []
+    save, drawn = plots._save, []
+    monkeypatch.setattr(plots, "_save",
+                        lambda fig, *a, **k: drawn.append(fig) or save(fig, *a, **k))
     files = plot_study(data, tmp_path / "png")
     assert [f.name for f in files] == ["s_area.png", "s_friction.png"]
+    for fig in drawn:
+        title = fig.axes[0].get_title()
+        assert title.startswith("s — sinusoid") and "β = 10" in title and "p̃∞ = 0.1" in title
+        assert "Γ̃" not in title                    # adhesionless: no Γ̃ to name
+    assert "2π: full contact" in drawn[0].axes[0].get_ylabel()
     for f in files:
         assert Path(f).read_bytes()[:8] == PNG
     assert matplotlib.get_backend() == backend
@@ -83,3 +94,12 @@ def test_a_result_is_drawn_with_its_scene(tmp_path, monkeypatch):
     assert "(2π: full)" in top.get_legend().get_texts()[0].get_text()
     with pytest.raises(vc.ValidationError, match=r"solutions\[0\].*fields=True"):
         plots.plot_solution_fields(vc.solve(scene), tmp_path / "g.png")
+
+
+def test_an_adhesive_scene_is_named_with_its_gamma():
+    from viscocontact import data
+    from viscocontact.plots import scene_label
+    from viscocontact.scene import Scene
+
+    label = scene_label(Scene.from_toml(data.example_scenes()["sinusoid"]))
+    assert label == "sinusoid, β = 10, p̃∞ = 0.3, Γ̃ = 0.004"      # γ̃/Λ̃² = 1e-5/0.05²

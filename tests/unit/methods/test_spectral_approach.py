@@ -50,6 +50,24 @@ def _area(solved) -> float:
     return 2 * np.pi * float(np.mean(solved.contact))
 
 
+#: How far apart two grid equilibria of one state may put an edge, in cells. The law is
+#: non-convex and the grid's equilibria at one Δ̃ form a family: started from the contact set
+#: of a converged state shifted by up to two cells at either edge, the solve ends on contacts
+#: whose edges span three cells at each edge (right edge 650-652 and left 3444-3446 of 4096 at
+#: the Ã = 2 state below; 1011-1013 and 3083-3085 at p̃∞ = 0.05). Which member a path ends on
+#: depends on its start and on round-off (with OpenBLAS's SkylakeX kernels on one thread the
+#: two paths of ``test_the_state_is_converged_in_the_step`` end on 1305 and 1302 contact cells,
+#: with its Prescott kernels both on 1303), so two paths' edges agree to two cells, not one.
+EDGE_CELLS = 2
+
+
+def _edges(solved) -> np.ndarray:
+    """The cells that end the one contact run on its right and start it on its left."""
+    step = np.diff(np.asarray(solved.contact, dtype=int))
+    (right,), (left,) = np.flatnonzero(step == -1), np.flatnonzero(step == 1) + 1
+    return np.array([right, left])
+
+
 def test_the_approach_starts_at_first_touch_and_reaches_the_closed_form_branch():
     target = MaugisDugdaleWavy(Gamma=GAMMA, h0=ETA).state(2.0)
     out, law = _on_grid(penetration=target.penetration)
@@ -63,20 +81,23 @@ def test_the_approach_starts_at_first_touch_and_reaches_the_closed_form_branch()
     # the peak snaps into contact on the way, located to the resolution
     born = [e for e in out.events if e.kind == "contact born"]
     assert born and all(e.step <= ApproachSettings().smallest * (1 + 1e-9) for e in born)
-    # the JKR branch of the closed form (the cell count resolves Ã to a cell or two)
-    assert _area(out.solved) == pytest.approx(2.0, abs=2 * 2 * np.pi / POINTS)
+    # the JKR branch of the closed form: the family's middle member is 0.8 of a cell below
+    # it (1303 cells), and its edges may lie a cell further in (EDGE_CELLS): within 3 cells
+    assert _area(out.solved) == pytest.approx(2.0, abs=3 * 2 * np.pi / POINTS)
     assert out.solved.solution.pressure.mean() == pytest.approx(target.mean_pressure, abs=2e-3)
 
 
 def test_the_state_is_converged_in_the_step():
-    """Half the path step reaches the same equilibrium to the grid's resolution (a contact
-    edge may settle one cell apart: the grid's equilibria at the two sides of a cell) and
-    locates the snap-in at the same Δ̃ to the resolution."""
+    """Half the path step reaches the same equilibrium to the grid's resolution (each edge
+    within :data:`EDGE_CELLS`: the grid's equilibria of one state span three cells at each
+    edge) and locates the snap-in at the same Δ̃ to the resolution."""
     target = MaugisDugdaleWavy(Gamma=GAMMA, h0=ETA).state(2.0).penetration
     coarse, _ = _on_grid(penetration=target)
     fine, _ = _on_grid(ApproachSettings(path_step=0.025), penetration=target)
     (c,), (f,) = coarse.history[-1:], fine.history[-1:]
-    assert c.contacts == f.contacts == 1 and abs(c.contact_cells - f.contact_cells) <= 2
+    assert c.contacts == f.contacts == 1
+    assert np.all(np.abs(_edges(coarse.solved) - _edges(fine.solved)) <= EDGE_CELLS)
+    # the family's members differ by 5.5e-4 in p̃∞ a cell apart at each edge (1303 and 1305)
     assert c.mean_pressure == pytest.approx(f.mean_pressure, abs=2e-3)
     (a,), (b,) = ([e.penetration for e in o.events if e.kind == "contact born"]
                   for o in (coarse, fine))
@@ -91,7 +112,8 @@ def test_load_control_ends_at_the_target_load_on_the_penetration_controlled_stat
     assert sol.converged and sol.pressure.mean() == pytest.approx(load, rel=1e-9)
     again, _ = _on_grid(penetration=float(sol.penetration))
     a, b = again.history[-1], out.history[-1]
-    assert a.contacts == b.contacts == 1 and abs(a.contact_cells - b.contact_cells) <= 2
+    assert a.contacts == b.contacts == 1
+    assert np.all(np.abs(_edges(again.solved) - _edges(out.solved)) <= EDGE_CELLS)
     assert a.mean_pressure == pytest.approx(load, abs=2e-3)
 
 

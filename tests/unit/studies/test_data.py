@@ -103,6 +103,9 @@ def test_sweep_dataset_is_the_table_on_named_axes(sweep_file):
     assert ds.area.attrs["units"] == "1" and "2π" in ds.area.attrs["long_name"]
     assert "fraction" not in ds.area.attrs["description"]
     assert ds.zeta.attrs["long_name"] == "ζ = q0 V τ" and ds.seconds.attrs["units"] == "s"
+    # every numeric result column and coordinate is labelled (the row index aside)
+    numeric = [n for n in ds.variables if ds[n].dtype.kind in "fiu" and n not in ("row", "chain")]
+    assert [n for n in numeric if not {"long_name", "units"} <= set(ds[n].attrs)] == []
 
 
 def test_approached_points_have_the_grid_of_a_ramp(tmp_path, adhesive):
