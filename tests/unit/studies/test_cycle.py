@@ -143,3 +143,31 @@ def test_a_cycle_gives_up_after_consecutive_failures(tmp_path, adhesionless, mes
         ["error"] * 3
     assert set(data.points["message"][3:]) == {"RuntimeError: lost"}
     assert not data.cycles()[0]["metrics"].detached
+
+
+@pytest.mark.slow     # two cycles of the thesis's rough scene to pull-off: 12-20 s
+def test_a_rough_adhesive_cycle_does_not_depend_on_its_step(tmp_path):
+    """The thesis rough scene (seed 0, ζ = 1e-2) cycled to Δ̃ = 0.4 and back to pull-off at steps
+    0.1 and 0.05: each point continues the branch through its neighbour's equilibrium with the
+    events located, so the common points agree to the solver's tolerance (the former continuation
+    from the neighbour's edges reached Ã = 1.285 against 0.873 at Δ̃ = 0.3); the approach's points
+    are those of a single solve from first touch."""
+    from viscocontact import solve
+    from viscocontact.scene import Load, Scene
+
+    scene = Scene.from_toml("examples/scenes/thesis_rough.toml")    # shipped with the package
+    tables = []
+    for step in (0.1, 0.05):
+        data = run(Cycle(scene=scene, max_penetration=0.4, step=step),
+                   tmp_path / f"c{step}.h5", progress=None)
+        p = data.points
+        assert p["converged"].all()
+        tables.append({(phase, round(float(t), 9)): float(a)
+                       for phase, t, a in zip(p["phase"], p["target"], p["area"])})
+    coarse, fine = tables
+    common = set(coarse) & set(fine)
+    assert len(common) >= 9
+    for key in common:
+        assert fine[key] == pytest.approx(coarse[key], rel=1e-6, abs=1e-7), key
+    single = solve(scene.replace(load=Load(penetration=0.3)))
+    assert coarse[("approach", 0.3)] == pytest.approx(single.area, rel=1e-6)
