@@ -34,7 +34,7 @@ scipy, matplotlib nor h5py:
 * errors and warnings: :class:`ViscoContactError` and its subclasses :class:`ValidationError`,
   :class:`PluginError`, :class:`ConvergenceError`, :class:`TimeLimitExceeded`,
   :class:`StudyFileError`; :class:`ViscoContactWarning`, :class:`PluginWarning`,
-  :class:`ModelValidityWarning`, :class:`CertificationWarning`.
+  :class:`ModelValidityWarning`, :class:`CertificationWarning`, :class:`AccuracyWarning`.
 
 The subpackages (``vc.profiles``, ``vc.studies``, ``vc.plots``, ...) are reachable as attributes
 too, also imported on first use.
@@ -79,7 +79,7 @@ _EXPORTS: dict[str, tuple[str, str]] = {
     **{name: ("errors", name) for name in (
         "ViscoContactError", "ValidationError", "PluginError", "ConvergenceError",
         "TimeLimitExceeded", "ViscoContactWarning", "PluginWarning", "ModelValidityWarning",
-        "CertificationWarning")},
+        "CertificationWarning", "AccuracyWarning")},
 }
 
 #: subpackages and modules reachable as attributes (``vc.studies``)

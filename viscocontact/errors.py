@@ -81,6 +81,19 @@ class ModelValidityWarning(ViscoContactWarning):
     below 3: infinitely short-range adhesion does not hold)."""
 
 
+class AccuracyWarning(ViscoContactWarning):
+    """A converged result whose error estimate exceeds the tolerance asked for: the discrete
+    equations are solved, but the discretisation error is larger than requested (the finest
+    grid the plan allows was reached); ``extras["error_estimate"]`` gives it."""
+
+
+def warn_accuracy(result) -> None:
+    """An :class:`AccuracyWarning` when ``result`` converged without meeting its tolerance
+    (``extras["tolerance_met"]`` false)."""
+    if result.converged and result.extras.get("tolerance_met", True) is False:
+        warn_user(f"{result.method or 'solve'}: {result.message}", AccuracyWarning)
+
+
 class CertificationWarning(ViscoContactWarning):
     """A study point does not agree with the same point reached with a tenth of its history's
     tolerance (``Sweep(certify=True)``): it is not converged in the continuation's step."""

@@ -207,6 +207,9 @@ class ContactProblem:
         with single_blas_thread():      # small dense systems: threads cost more than they gain
             result = self.method.solve(self, initial, fields=fields, prepared=prepared)
         _log(result)
+        from .errors import warn_accuracy
+
+        warn_accuracy(result)
         if raise_on_failure and not result.converged:
             from .errors import ConvergenceError
 

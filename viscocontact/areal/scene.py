@@ -185,7 +185,11 @@ class ArealScene:
 
     def solve(self, *, fields: bool = False):
         """The equilibrium: :meth:`ArealSpectral.solve` of :meth:`problem`."""
-        return self.method.solve(self.problem(), fields=fields)
+        from ..errors import warn_accuracy
+
+        result = self.method.solve(self.problem(), fields=fields)
+        warn_accuracy(result)
+        return result
 
     def replace(self, **changes: Any) -> "ArealScene":
         """This scene with some fields replaced, checked like a new one (as
