@@ -60,3 +60,18 @@ def test_a_motion_that_does_not_stop_within_its_steps_says_so():
 
     out = relax.run(np.array([-0.05, 0.05]), Control.load_of(LOAD))
     assert not out.converged and "did not stop within 2 steps" in out.message
+
+
+def test_a_motion_that_slows_down_past_a_fold_goes_on_through_it():
+    """The thesis rough scene (seed 0) at p̃∞ = 0.1, ζ = 10^-1.125: past a fold at p̃∞ = 0.0597
+    the edges slow down where the root has just vanished (max|r| below the motion's rest level)
+    and the equilibrium solve there stalls at max|r| 8e-7; the motion goes on through that
+    bottleneck and the approach reaches the equilibrium of a four times finer path (4 contacts,
+    Ã = 0.6084087; it failed there before)."""
+    scene = vc.Scene.from_toml("examples/scenes/thesis_rough.toml").replace(
+        load=vc.Load(mean_pressure=0.1), zeta=10**-1.125)
+    r = vc.solve(scene)
+    assert r.converged, r.message
+    assert any(e.startswith("the edges' motion slowed down past a fold")
+               for e in r.extras["events"])
+    assert r.n_contacts == 4 and r.area == pytest.approx(0.6084087, rel=1e-6)

@@ -22,7 +22,9 @@ Newton's iteration from the state contracts (its second step at most
 state lies where the linearised motion holds, and the flow ends at Newton's root), or
 ``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance, the equilibrium solve
 finishes from there with the contact set held, on the trial budgets of an approach step (at a
-fold, where the root is gone, it fails fast and the motion goes on). Where the profile penetrates
+fold, where the root is gone, it fails fast and the motion goes on). Just past a fold the edges
+slow down where the root has vanished (a bottleneck whose residual can fall below the rest
+level); where the equilibrium solve finds no root at rest, the motion goes on through it. Where the profile penetrates
 at its root, contacts are born there, at zero size, and the motion goes on with them (a born
 contact grows as every edge moves), so that merges, detachments and births all happen on the
 way, as the motion makes them.
@@ -83,6 +85,7 @@ class _Motion:
     rezoned: int = 0
     moved: int = 0                      # accepted steps
     rejected: bool = False              # the last step was rejected
+    ghost: float = np.inf               # max|r| below which the motion is at rest again
     early: bool = True                  # no equilibrium solve tried yet: zones are remade
     #                                     (the motion's first steps move edges the most)
     tested: float = np.inf              # Newton's contraction is tested again below this max|r|
@@ -177,11 +180,20 @@ class Relaxation:
         for _ in range(self.max_steps):
             if m.r is None:
                 return self._failed(m.x, "met a contact set without a valid field")
-            near = np.max(np.abs(m.r)) <= settled
+            size = float(np.max(np.abs(m.r)))
+            near = size <= min(settled, m.ghost)
             if (near or m.early) and m.rezoned < REZONED and self._rezone(m, control, systems):
                 continue
             if near:
-                return self._at_rest(m, control)
+                out = self._at_rest(m, control)
+                if not (isinstance(out, State) and out.outcome is Outcome.NOT_CONVERGED
+                        and not out.change):
+                    return out
+                # no root where the edges slowed down: the bottleneck just past a fold, where
+                # the residual is small but the root has gone; the motion goes on through it
+                m.ghost = 0.5 * size
+                self.eq.log.event("the edges' motion slowed down past a fold, where no "
+                                  "equilibrium is: it goes on")
             if m.J is None or m.age >= JACOBIAN_AGE:
                 m.J, m.age = self._jacobian(m.system, m.x), 0
                 if m.J is None:
