@@ -11,10 +11,10 @@ on the contact and the two are equal; on a grid ``u = h + c`` holds at the loade
 For every scene and grid this prints and writes both, their relative gap, the method's own
 friction estimate, the errors of both against the 1D reference, and from the three finest grids
 the observed order of each measure's grid-to-grid change and its Richardson limit (on the 1D
-scenes the finest grids are at the solver's resolution, the reference is the check). 1D scenes: a sinusoid and two self-affine profiles
-on a standard linear solid (β = 10) with a reference on 65536 cells; areal scenes: the
-acceptance surface of ``benchmarks/areal.py`` (wavenumbers 1 to 32, about 14 % contact) and a
-smoother one (1 to 8), each sampled on every grid.
+scenes the finest grids are at the solver's resolution, the reference is the check). 1D scenes:
+a sinusoid and two self-affine profiles on a standard linear solid (β = 10) with a reference on
+65536 cells; areal scenes: the acceptance surface of ``benchmarks/areal.py`` (wavenumbers 1 to
+32, about 14 % contact) and a smoother one (1 to 8), each sampled on every grid.
 """
 from __future__ import annotations
 
