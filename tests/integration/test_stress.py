@@ -450,7 +450,13 @@ def test_failure_is_loud_and_carries_the_result():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("zeta", [1e-2, 1.0, 1e2])
+@pytest.mark.parametrize("zeta", [
+    pytest.param(1e-2, marks=pytest.mark.xfail(strict=True, reason=(
+        "the edges' motion from the first contact runs a cycle instead of closing the contact: "
+        "at Δ̃ = 0.69 the contact grows to a width of 3.8, shrinks to a point while it travels "
+        "and grows again, so the approach reports 'no steady state' where Johnson with E0 "
+        "closes the contact (also at 943f694)"))),
+    1.0, 1e2])
 def test_strong_adhesion_without_equilibrium_at_first_touch(zeta):
     """Γ̃ = 0.05, p̃∞ = 0.3, β = 10: at ζ = 1e-2 and 1 the first contact has no equilibrium at
     the first-touch penetration (its edges ran round the period until the solver gave up, and
