@@ -72,6 +72,25 @@ class RelaxFrom:
     tolerance: float = 0.02
 
 
+class _Systems:
+    """The edge systems of one motion, for their residual evaluations: a system's count is
+    taken when the next one replaces it, and the system is let go (each holds its last field and
+    factorisation, megabytes a contact set; a motion can make hundreds)."""
+
+    def __init__(self):
+        self._done = 0
+        self._current = None
+
+    def append(self, system) -> None:
+        if self._current is not None:
+            self._done += self._current.evaluations
+        self._current = system
+
+    @property
+    def evaluations(self) -> int:
+        return self._done + (0 if self._current is None else self._current.evaluations)
+
+
 @attrs.define
 class _Motion:
     """The integrator's state of one motion of a contact set."""
@@ -131,7 +150,7 @@ class Relaxation:
         """The state the edges' motion from ``edges`` ends in (not converged, with the reason,
         when the motion does not end). ``final = False``: an intermediate state of a path,
         solved to :data:`~.path.STEP_REDUCTION` of its start's residual and not polished."""
-        systems: list = []
+        systems = _Systems()
         self._finish = ({} if final else
                         {"polish": False, "refine": False, "reduction": STEP_REDUCTION})
         x = np.asarray(edges, dtype=float).copy()
@@ -143,7 +162,7 @@ class Relaxation:
                 x = out             # contacts were born: the motion goes on with them
             return self._failed(x, f"met more than {self.max_steps} births")
         finally:
-            self.eq.log.evaluations += sum(s.evaluations for s in systems)
+            self.eq.log.evaluations += systems.evaluations
 
     def _failed(self, x, why: str) -> State:
         return State(outcome=Outcome.NOT_CONVERGED, edges=x, message=f"the edges' overdamped "
@@ -169,7 +188,8 @@ class Relaxation:
             return State.full_contact() if full else edges
         return None if out.change else out
 
-    def _run(self, x: np.ndarray, control: Control, systems: list) -> State | np.ndarray:
+    def _run(self, x: np.ndarray, control: Control,
+             systems: "_Systems") -> State | np.ndarray:
         """One motion of the contact set ``x``: steps until the edges come to rest (the
         state there, or the edges with contacts born there), or until the motion ends
         otherwise (closure, detachment, a failure)."""
@@ -205,7 +225,7 @@ class Relaxation:
                 return out
         return self._failed(m.x, f"did not stop within {self.max_steps} steps")
 
-    def _rezone(self, m: "_Motion", control: Control, systems: list) -> bool:
+    def _rezone(self, m: "_Motion", control: Control, systems: "_Systems") -> bool:
         """Whether the edges, at rest, have moved out of the mesh zones they were solved with
         (which the equilibrium solve would remake): then the motion goes on, on new ones."""
         fresh = self._fresh(m.system, m.x, control)
@@ -244,7 +264,7 @@ class Relaxation:
         self.eq.log.event(f"the edges moved in {m.moved} steps of their overdamped motion")
         return out
 
-    def _advance(self, m: "_Motion", control: Control, systems: list) -> State | None:
+    def _advance(self, m: "_Motion", control: Control, systems: "_Systems") -> State | None:
         """One step of the motion, accepted or rejected by its local error; a state when the
         step ends the motion (closure, every contact detached, a contact that travels)."""
         if m.h is None:         # the first step moves the fastest edge a twentieth of a scale
