@@ -25,9 +25,10 @@ SPECTRAL_LOW_ZETA = (
     "relaxation at the contact edges, and the estimate compares two grids that both miss it")
 HALF_PERIOD_FIRST_CONTACT = (
     "the first contact's motion (Prony solid at ζ = 8.3e-6, relaxation lengths far below δX = "
-    "1e-4) spreads it over half the period and comes to rest where the equilibrium solve stalls "
-    "at max|r| = 0.834; with the edge zones remade at every step of the motion the contact "
-    "travels round the period instead: the motion's end depends on the mesh zones here")
+    "1e-4) spreads it over half the period and slows down where the equilibrium solve finds no "
+    "root (it stalls at max|r| = 0.834), then does not stop within 2000 steps; with the edge "
+    "zones remade at every step the contact travels round the period instead: the motion's end "
+    "depends on the mesh zones here")
 MD_ZONES_AT_X0 = (
     "the Maugis-Dugdale zones' bounded-stress equations do not converge in 60 Newton "
     "iterations at the first edge set, so the residual at x0 is not finite and the solve "
