@@ -301,6 +301,38 @@ class StudyData:
 
 
     # ---- the Python data stack ----------------------------------------------------------------
+    def physical(self) -> dict[str, np.ndarray]:
+        """The points in SI units, by row: ``contact_length`` (m), ``contact_fraction`` (1),
+        ``penetration`` (m), ``mean_pressure`` and ``tangential_stress`` (Pa), ``friction``
+        (1), from the scene's ``[physical]`` table, each point with its own chain's profile (a
+        seed changes the profile's amplitude Λ, the scale of Δ̃ and p̃∞); what
+        :meth:`ContactResult.physical <viscocontact.result.ContactResult.physical>` gives for
+        one result. Raises :class:`~viscocontact.errors.ValidationError` naming the missing
+        ``physical`` key (or the areal scene, whose results are not converted)."""
+        from types import SimpleNamespace
+
+        from ..errors import ValidationError
+        from ..scene import Scene
+        from ..units import physical_result
+
+        if self.areal:
+            raise ValidationError("scene", "an areal scene",
+                                  "a profile's scene: SI results of areal studies are not given")
+        scenes = {c.index: Scene.from_dict(c.scene) for c in self.study.chains()}
+        keys = ("contact_length", "contact_fraction", "penetration", "mean_pressure",
+                "tangential_stress", "friction")
+        out = {k: np.full(len(self), np.nan) for k in keys}
+        p = self.points
+        for row in range(len(self)):
+            point = SimpleNamespace(area=float(p["area"][row]), edges=(),
+                                    penetration=float(p["penetration"][row]),
+                                    mean_pressure=float(p["mean_pressure"][row]),
+                                    friction=float(p["friction"][row]))
+            si = physical_result(point, scenes[int(p["chain"][row])])
+            for k in keys:
+                out[k][row] = getattr(si, k)
+        return out
+
     def to_dataframe(self):
         """The stored points as a pandas DataFrame: one row per point (index ``row``, the order
         in which they finished), one column per :data:`~viscocontact.studies.COLUMNS` entry

@@ -72,3 +72,21 @@ def test_solve_si_prints_the_si_view_or_says_what_is_missing(tmp_path, capsys):
     assert main(["solve", str(bare), "--si"]) == 2
     captured = capsys.readouterr()
     assert captured.out == "" and "physical.wavelength" in captured.err
+
+
+def test_a_studys_points_are_read_in_si_units_as_their_single_solves(tmp_path):
+    """``StudyData.physical()``: every point of a sweep of an SI scene, in SI units, is what its
+    own single solve gives through ``ContactResult.physical`` (the same conversion), and the load
+    given in pascal comes back in pascal."""
+    scene = vc.Scene.from_toml(SI + "mean_pressure = 1e5\n")
+    zetas = [0.1, 1.0, 10.0]
+    data = vc.run_study(vc.Sweep(scene=scene, zetas=zetas, pair=False), tmp_path / "s.h5",
+                        progress=None)
+    si = data.physical()
+    assert set(si) == {"contact_length", "contact_fraction", "penetration", "mean_pressure",
+                       "tangential_stress", "friction"}
+    np.testing.assert_allclose(si["mean_pressure"], 1e5, rtol=1e-12)
+    for row, zeta in enumerate(data.points["zeta"]):
+        alone = vc.solve(scene.replace(zeta=float(zeta))).physical(scene)
+        for key in si:
+            assert si[key][row] == pytest.approx(getattr(alone, key), rel=1e-9), key
