@@ -35,6 +35,7 @@ from typing import Any
 import attrs
 import numpy as np
 
+from .grid_law import GridLaw
 from .operator import convolve
 from .solvers import GridSolution, grid_solve, violation
 from .tips import (FLATTEST_SLOPE, contact_extents, moved_tips, row_tips, same_runs,
@@ -52,25 +53,6 @@ LOOSE_INNER = 1e-6
 #: Fewest cells per quasi-static Dugdale zone ``h̃0²/(4γ̃)`` on the first trusted grid (a
 #: viscoelastic zone lies within ``[a0/2, βa0]``).
 CELLS_PER_ZONE = 32.0
-
-
-@attrs.frozen(kw_only=True)
-class GridLaw:
-    """The cohesive law on the grid, in the units of the grid solve.
-
-    Attributes
-    ----------
-    strength : float
-        ``σ̃0``, the cohesive tension (> 0).
-    opening : float
-        ``η = h̃0/Λ̃``, the gap up to which it acts (> 0).
-    zone : float
-        The quasi-static Dugdale zone ``q0 a0 = h̃0²/(4γ̃)`` (``x̃`` units), which sets the grid.
-    """
-
-    strength: float
-    opening: float
-    zone: float
 
 
 def zone_cells(law: GridLaw, points: int) -> float:

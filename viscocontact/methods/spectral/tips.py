@@ -13,7 +13,7 @@ import numpy as np
 from .edges import runs
 
 if TYPE_CHECKING:
-    from .cohesive import GridLaw
+    from .grid_law import GridLaw
 
 #: A tip's secant slope is used down to this fraction of the gap's own slope there.
 FLATTEST_SLOPE = 0.05
