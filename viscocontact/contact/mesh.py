@@ -109,8 +109,9 @@ def zone_pattern(alpha: float, spec: MeshSpec) -> tuple | None:
     terms of δL_P then compare the two fields node by node); this only when ``δX <= 20 h0``. Then sizes grow by ``grading``
     up to the junction.
     """
-    if spec.smallest is None:
-        return None
+    if spec.smallest is None or not 0.0 < alpha < np.inf:
+        return None                 # (a contact that is no interval, e.g. a start whose edges
+        #                             crossed: its zone would grow without end)
     g = spec.grading
     d = clustered_nodes(alpha, spec.elements, spec.exponent) + alpha
     junction = _junction(d, spec)

@@ -1,4 +1,5 @@
 """The edge zones that ``methods.bem.meshing.mesh_spec`` asks for."""
+import numpy as np
 import pytest
 
 from viscocontact.adhesion import EnergyBalance, NoAdhesion
@@ -32,3 +33,26 @@ def test_an_elastic_sharp_edge_gets_a_zone():
     assert _smallest(Elastic(), 0.0, EnergyBalance(gamma=1e-6, edge_perturbation=0.0)) == \
         pytest.approx(1e-5)
     assert _smallest(Elastic(), 0.0, NoAdhesion()) is None
+
+
+def test_a_contact_that_is_no_interval_gets_no_edge_zone():
+    """A start whose edges crossed (a speed ramp's secant prediction of a shrinking contact)
+    has a negative half-width: it gets no zone (whose geometric growth towards a negative end
+    never stopped and filled the memory: 24 GB), and the solve repairs the contact set."""
+    from viscocontact.contact.mesh import MeshSpec, zone_pattern
+
+    spec = MeshSpec(elements=64, exponent=1.0, grading=1.15, smallest=1e-5, advance=1e-4)
+    assert zone_pattern(-6.0e-4, spec) is None and zone_pattern(0.0, spec) is None
+    assert zone_pattern(np.inf, spec) is None and zone_pattern(np.nan, spec) is None
+    assert zone_pattern(0.5, spec) is not None
+
+
+def test_a_solve_from_crossed_edges_repairs_them():
+    import viscocontact as vc
+
+    scene = vc.Scene.from_toml("examples/scenes/thesis_rough.toml").replace(
+        load=vc.Load(mean_pressure=0.3), zeta=10.0)
+    crossed = np.array([[1.9284, 1.8449], [2.2366, 2.314], [2.5091, 2.6319]])
+    r = vc.solve(scene, initial=crossed)
+    assert r.converged, r.message
+    assert "1 contact(s) detached" in r.extras["events"]
