@@ -664,10 +664,8 @@ def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
     numpy.linalg.LinAlgError
         When ``∂K̃/∂d`` is singular (the lengths do not follow the edges).
     """
-    if fields.loads is None:
-        raise ValueError("zone_derivatives: fields without zones (loads is None)")
     d = zone_widths(fields)
-    z = _MovingZones.of(fields, dfields.n_dirs)
+    z = _MovingZones.of(fields, dfields.n_dirs)      # (raises for fields without zones)
     sx, sd = _zone_stress_derivatives(fields, dfields, stress, z)
     # stress-intensity factors
     W, explicit = dfields.fit_motion(BOUNDED_POWERS)
@@ -724,6 +722,8 @@ class _MovingZones:
     def of(cls, fields: FieldSolution, n_dirs: int) -> "_MovingZones":
         """The zones of ``fields`` (with zones) for ``n_dirs`` directions."""
         mesh, loads = fields.mesh, fields.loads
+        if loads is None:
+            raise ValueError("zone_derivatives: fields without zones (loads is None)")
         n = len(mesh.edges)
         d = zone_widths(fields)
         act = np.flatnonzero(d > 0)

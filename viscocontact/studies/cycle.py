@@ -240,7 +240,7 @@ class Cycle(Study):
             phase = RETRACT
         anchor = next((r for r in reversed(records) if has_contact(r)), None)
         started_from, initial = starting_point(anchor, target)
-        if initial is not None and initial.size:
+        if anchor is not None and initial is not None and initial.size:
             # the branch through the neighbour's equilibrium, followed to this penetration with
             # its events located (the approach's continuation): the values recorded do not
             # depend on the cycle's step

@@ -41,6 +41,7 @@ HOMES = {
     "TimeLimitExceeded": "viscocontact.errors", "ViscoContactWarning": "viscocontact.errors",
     "PluginWarning": "viscocontact.errors", "ModelValidityWarning": "viscocontact.errors",
     "CertificationWarning": "viscocontact.errors",
+    "AccuracyWarning": "viscocontact.errors",
 }
 
 

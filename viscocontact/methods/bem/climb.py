@@ -51,16 +51,16 @@ class Climb:
             if np.isfinite(self.end) and abs(self.end - v) <= 1e-14 * max(1.0, abs(self.end)):
                 return state
             if bracket is not None and abs(bracket[0] - v) <= bracket[2] * (1 + 1e-9):
-                out = self.acted()
+                out = self.acted(bracket)
                 if out is not None:
                     return out
                 continue
             self.tried()
 
-    def acted(self) -> State | None:
-        """The located event's action: the state that ends the climb, or None when the climb
-        goes on from the landing."""
-        state, bracket, target = self.state, self.bracket, self.target
+    def acted(self, bracket: tuple) -> State | None:
+        """The action of the event located in ``bracket``: the state that ends the climb, or
+        None when the climb goes on from the landing."""
+        state, target = self.state, self.target
         if self.by_depth and bracket[1] in ("fold", "target"):
             # the target load located; or a step that failed near it (an adhesionless
             # contact has no folds: that failure is the solver's): the target load is

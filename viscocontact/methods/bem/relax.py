@@ -205,10 +205,10 @@ class Relaxation:
             if (near or m.early) and m.rezoned < REZONED and self._rezone(m, control, systems):
                 continue
             if near:
-                out = self._at_rest(m, control)
-                if not (isinstance(out, State) and out.outcome is Outcome.NOT_CONVERGED
-                        and not out.change):
-                    return out
+                rest = self._at_rest(m, control)
+                if not (isinstance(rest, State) and rest.outcome is Outcome.NOT_CONVERGED
+                        and not rest.change):
+                    return rest
                 # no root where the edges slowed down: the bottleneck just past a fold, where
                 # the residual is small but the root has gone; the motion goes on through it
                 m.ghost = 0.5 * size
@@ -250,6 +250,8 @@ class Relaxation:
     def _shortcut(self, m: "_Motion", control: Control) -> State | np.ndarray | None:
         """The equilibrium the motion heads for, when Newton's iteration from here reaches it
         (:meth:`_newton_start`; tested again once ``max|r|`` has halved); else None."""
+        if m.r is None or m.J is None:
+            return None
         size = float(np.max(np.abs(m.r)))
         if size > m.tested:
             return None
@@ -267,6 +269,8 @@ class Relaxation:
     def _advance(self, m: "_Motion", control: Control, systems: "_Systems") -> State | None:
         """One step of the motion, accepted or rejected by its local error; a state when the
         step ends the motion (closure, every contact detached, a contact that travels)."""
+        if m.r is None or m.J is None:
+            return self._failed(m.x, "met a contact set without a valid field")
         if m.h is None:         # the first step moves the fastest edge a twentieth of a scale
             m.h = 0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(m.r), 1e-300)))
         # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign

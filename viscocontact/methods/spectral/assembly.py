@@ -3,6 +3,7 @@ r"""The result of a spectral solve: the final grid's measures, fields and diagno
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -57,8 +58,9 @@ def contact_result(problem, prep, current: GridMeasures, *, iterations: int, app
         Threads of ``scipy.fft``.
     """
     grid, sol = current.grid, current.solution
-    common = dict(iterations=int(iterations), function_evaluations=int(applications),
-                  zeta=float(problem.zeta), edge_perturbation=0.0, extras=extras)
+    common: dict[str, Any] = dict(iterations=int(iterations),
+                                  function_evaluations=int(applications),
+                                  zeta=float(problem.zeta), edge_perturbation=0.0, extras=extras)
     if current.closed:
         return closed.result(prep.m2, common, problem.mean_pressure, problem.penetration,
                              fields, message="every cell loaded: contact closed over the "

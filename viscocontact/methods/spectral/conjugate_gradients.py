@@ -55,7 +55,8 @@ class _ConstrainedGradients:
         self.g_old, self.conjugate, self.shift, self.residual = 1.0, 0.0, 0.0, np.inf
         self.applications = 0
         self.tolerance, self.max_iterations, self.workers = tolerance, max_iterations, workers
-        self.loaded = self.gradient = None
+        self.loaded: np.ndarray = np.zeros(p.size, dtype=bool)   # (set by :meth:`measure`)
+        self.gradient: np.ndarray = np.zeros(p.size)
 
     def measure(self) -> None:
         """The loaded cells, the gradient (the gaps, shifted by the load multiplier in load
