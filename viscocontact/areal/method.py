@@ -86,7 +86,7 @@ class _Ladder:
     current: Measured | None = None
     converged: bool = False
     last: tuple[float, float] | None = None
-    errors: tuple[float, float] = (np.inf, np.inf)
+    errors: tuple[float, ...] = (np.inf, np.inf)
     iterations: int = 0
     applications: int = 0
 

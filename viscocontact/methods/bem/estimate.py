@@ -8,6 +8,8 @@ zones twice as coarse (:func:`coarser_zones`: twice the grading's excess ``g - 1
 the edge element). Richardson's rule turns each change of Ã and μ into an error,
 ``|Ã_coarse - Ã| / (2^p - 1)`` at the order of its kind, and the estimate is their sum,
 relative to Ã (``μ`` relative to ``max(|μ|, FRICTION_FLOOR·√m2)``, as the spectral method's).
+The dissipated power's friction (the power balance's side: the bulk dissipation and the flux
+into the edges) gets its estimate the same way, reported beside them.
 """
 from __future__ import annotations
 
@@ -17,7 +19,7 @@ import time
 import attrs
 import numpy as np
 
-from ...contact.fields import friction
+from ...contact.fields import dissipated_friction, edge_flux_friction, friction
 from .state import Outcome, State
 
 #: Order assumed for the change under half the elements: the clustered mesh converges at second
@@ -55,13 +57,14 @@ def coarser_zones(disc):
 
 @attrs.frozen(kw_only=True)
 class Coarse:
-    """One coarse solve of an estimate: Ã and μ (NaN when it did not converge), its elements per
-    contact, residual evaluations, time, and what was coarsened (``"elements"`` or
-    ``"edge zones"``)."""
+    """One coarse solve of an estimate: Ã, μ and the dissipated power's μ (NaN when it did not
+    converge), its elements per contact, residual evaluations, time, and what was coarsened
+    (``"elements"`` or ``"edge zones"``)."""
 
     kind: str
     area: float
     friction: float
+    dissipation: float
     elements: int
     evaluations: int
     seconds: float
@@ -70,11 +73,14 @@ class Coarse:
 
 @attrs.frozen(kw_only=True)
 class Estimate:
-    """The estimate of one solve: relative errors of Ã and μ and the coarse solves they come
+    """The estimate of one solve: relative errors of Ã, μ and the dissipated power's μ (the
+    latter two relative to ``scale``, :func:`friction_scale`) and the coarse solves they come
     from (NaN when a coarse solve did not converge)."""
 
     area: float
     friction: float
+    dissipation: float
+    scale: float
     coarse: tuple
 
     @property
@@ -90,32 +96,50 @@ class Estimate:
 
     def extras(self) -> dict:
         """The result's entries: ``estimates`` (as the spectral method's) and ``coarse``."""
-        return {"estimates": {"area": self.area, "friction": self.friction},
+        return {"estimates": {"area": self.area, "friction": self.friction,
+                              "dissipation": self.dissipation, "friction_scale": self.scale},
                 "coarse": [attrs.asdict(c) for c in self.coarse]}
 
 
-def measures(prep, state: State) -> tuple[float, float]:
-    """Ã and μ of a converged partial-contact state."""
+def measures(prep, state: State, adhesion) -> tuple[float, float, float]:
+    """Ã, μ and the dissipated power's μ (bulk and the flux into the edges, whose stress
+    intensities are the ``adhesion`` model's, as in the result) of a converged partial-contact
+    state."""
     fields = state.fields
     mesh = fields.mesh
+    pm = fields.mean_pressure
+    amplitude = prep.shape.amplitude
+    dissipated = dissipated_friction(prep.kernel, mesh, fields.sigma, amplitude, pm, fields.loads)
+    if state.ctx is not None:
+        dissipated += edge_flux_friction(adhesion.edge_terms(state.ctx).stress_intensity,
+                                         state.ctx.edge_compliance, amplitude, pm)
     return (float(np.sum(mesh.width)),
-            friction(mesh, fields.sigma, prep.shape, fields.mean_pressure, fields.loads))
+            friction(mesh, fields.sigma, prep.shape, pm, fields.loads), float(dissipated))
 
 
-def relative_changes(fine: tuple[float, float], coarse: tuple[float, float],
-                     m2: float) -> tuple[float, float]:
-    """``|Ã_c - Ã|/Ã`` and ``|μ_c - μ|/max(|μ|, FRICTION_FLOOR·√m2)`` (0 for μ when neither is
-    defined, e.g. at zero load)."""
+def friction_scale(friction: float, m2: float) -> float:
+    """``max(|μ|, FRICTION_FLOOR·√m2)``: what the friction's estimate is relative to."""
+    mu = abs(friction) if np.isfinite(friction) else 0.0
+    return float(max(mu, FRICTION_FLOOR * math.sqrt(max(m2, 0.0)), 1e-300))
+
+
+def relative_changes(fine: tuple[float, ...], coarse: tuple[float, ...],
+                     m2: float) -> tuple[float, ...]:
+    """``|Ã_c - Ã|/Ã``, then the changes of μ and of the other frictions (the dissipated
+    power's) relative to :func:`friction_scale` (0 for one that neither defines, e.g. at zero
+    load)."""
     d_area = abs(coarse[0] - fine[0]) / max(fine[0], 1e-300)
-    scale = max(abs(fine[1]) if np.isfinite(fine[1]) else 0.0,
-                FRICTION_FLOOR * math.sqrt(max(m2, 0.0)), 1e-300)
-    d_mu = abs(coarse[1] - fine[1]) / scale
-    if not np.isfinite(d_mu):
-        d_mu = 0.0 if not (np.isfinite(fine[1]) or np.isfinite(coarse[1])) else np.inf
-    return float(d_area), float(d_mu)
+    scale = friction_scale(fine[1], m2)
+    out = [float(d_area)]
+    for f, c in zip(fine[1:], coarse[1:]):
+        d = abs(c - f) / scale
+        if not np.isfinite(d):
+            d = 0.0 if not (np.isfinite(f) or np.isfinite(c)) else np.inf
+        out.append(float(d))
+    return tuple(out)
 
 
-def coarse_solve(parts, prep, state: State, target, kind: str, disc) -> Coarse:
+def coarse_solve(parts, prep, state: State, target, kind: str, disc, adhesion) -> Coarse:
     """The equilibrium with discretisation ``disc`` at ``target`` from the edges of the converged
     ``state`` (its contact-set changes included, no polish); ``parts(disc)``: the solve's parts
     for that discretisation (their ``equilibrium`` and ``log``)."""
@@ -125,21 +149,22 @@ def coarse_solve(parts, prep, state: State, target, kind: str, disc) -> Coarse:
     common = dict(kind=kind, elements=disc.elements, evaluations=solve.log.evaluations,
                   seconds=time.perf_counter() - t0)
     if out.outcome is not Outcome.CONVERGED or out.fields is None:
-        return Coarse(area=float("nan"), friction=float("nan"), **common,
-                      message=f"the coarse solve ({kind}) ended {out.outcome.value}: "
-                              f"{out.message}")
-    area, mu = measures(prep, out)
+        return Coarse(area=float("nan"), friction=float("nan"), dissipation=float("nan"),
+                      **common, message=f"the coarse solve ({kind}) ended "
+                                        f"{out.outcome.value}: {out.message}")
+    area, mu, dissipated = measures(prep, out, adhesion)
     message = "" if len(out.edges) == len(state.edges) else (
         f"the coarse mesh ({kind}) has another contact set ({len(out.edges) // 2} contacts "
         f"against {len(state.edges) // 2})")
-    return Coarse(area=area, friction=mu, **common, message=message)
+    return Coarse(area=area, friction=mu, dissipation=dissipated, **common, message=message)
 
 
-def estimate(parts, disc, prep, spec, state: State, target) -> Estimate:
+def estimate(parts, disc, prep, spec, state: State, target, adhesion) -> Estimate:
     """The error estimate of the converged ``state`` at ``target`` (a :class:`~.sets.Control`)
     of a problem with discretisation ``disc`` (``spec`` its
     :class:`~viscocontact.contact.mesh.MeshSpec`; ``parts(disc)`` the parts of its solve with
-    another discretisation, :class:`~viscocontact.methods.bem.method.Solve`).
+    another discretisation, :class:`~viscocontact.methods.bem.method.Solve`; ``adhesion`` its
+    adhesion model).
 
     The change of Ã and μ under half the elements (:func:`fewer_elements`) at
     :data:`ELEMENT_ORDER`, plus, when the mesh has edge zones, the change under zones twice as
@@ -148,15 +173,16 @@ def estimate(parts, disc, prep, spec, state: State, target) -> Estimate:
     (64 elements: +1.1e-4 from the elements, -2.1e-4 from the zones), so that coarsened at once
     they would cancel.
     """
-    runs = [(coarse_solve(parts, prep, state, target, "elements", fewer_elements(disc)),
-             ELEMENT_ORDER)]
+    runs = [(coarse_solve(parts, prep, state, target, "elements", fewer_elements(disc),
+                          adhesion), ELEMENT_ORDER)]
     if spec.smallest is not None:
         runs.append((coarse_solve(parts, prep, state, target, "edge zones",
-                                  coarser_zones(disc)), EDGE_ORDER))
-    fine = measures(prep, state)
-    area = mu = 0.0
+                                  coarser_zones(disc), adhesion), EDGE_ORDER))
+    fine = measures(prep, state, adhesion)
+    errors = np.zeros(3)
     for run, order in runs:
-        d_area, d_mu = relative_changes(fine, (run.area, run.friction), prep.m2)
-        area += d_area / (2.0**order - 1.0)
-        mu += d_mu / (2.0**order - 1.0)
-    return Estimate(area=area, friction=mu, coarse=tuple(run for run, _ in runs))
+        errors += np.asarray(relative_changes(fine, (run.area, run.friction, run.dissipation),
+                                              prep.m2)) / (2.0**order - 1.0)
+    return Estimate(area=float(errors[0]), friction=float(errors[1]),
+                    dissipation=float(errors[2]), scale=friction_scale(fine[1], prep.m2),
+                    coarse=tuple(run for run, _ in runs))

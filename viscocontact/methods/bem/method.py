@@ -126,7 +126,7 @@ class Solve:
         else:
             out = self.approach.run(target)
         found = (estimate(lambda disc: Solve(attrs.evolve(p, discretization=disc), self.prep),
-                          p.discretization, self.prep, self.spec, out, target)
+                          p.discretization, self.prep, self.spec, out, target, p.adhesion)
                  if estimate_error and out.outcome is Outcome.CONVERGED else None)
         if found is not None:
             self.log.event(f"error estimate {found.error:.2g} (Ã {found.area:.2g}, μ "

@@ -12,7 +12,7 @@ from .closed import ClosedContact
 from .cohesive import GridLaw, law_violation, zone_cells
 from .edges import runs
 from .measures import GridMeasures
-from .operator import convolve, power
+from .operator import convolve
 from .solvers import violation
 
 
@@ -74,8 +74,7 @@ def contact_result(problem, prep, current: GridMeasures, *, iterations: int, app
     pm = float(p.mean())
     if law is not None:
         extras["cohesive"] = _cohesive_extras(law, current)
-    loss = prep.operators.dissipation(prep.kernel, grid.points)
-    extras["friction_dissipation"] = prep.shape.amplitude * power(p, loss, workers) / pm
+    extras["friction_dissipation"] = current.dissipation
     extras["solver"] = sol.solver
     mu = current.friction
     sqrt_m2 = math.sqrt(prep.m2) if prep.m2 > 0 else np.nan

@@ -1,5 +1,6 @@
-r"""The spectral method's error estimate: the relative changes of ``Ã`` and ``μ`` between two
-grids (:func:`changes`) and the Richardson estimate built from them (:func:`estimate`)."""
+r"""The spectral method's error estimate: the relative changes of ``Ã``, ``μ`` and the dissipated
+power's friction between two grids (:func:`changes`) and the Richardson estimate built from
+them (:func:`estimate`)."""
 from __future__ import annotations
 
 import math
@@ -14,8 +15,9 @@ ORDER = 1.0
 
 
 def changes(coarse: GridMeasures, fine: GridMeasures, m2: float,
-            friction_floor: float) -> tuple[float, float]:
-    """Relative changes of ``Ã`` and ``μ`` from the coarse to the fine grid.
+            friction_floor: float) -> tuple[float, float, float]:
+    """Relative changes of ``Ã``, ``μ`` and the dissipated power's friction from the coarse to
+    the fine grid.
 
     Parameters
     ----------
@@ -24,25 +26,40 @@ def changes(coarse: GridMeasures, fine: GridMeasures, m2: float,
     m2 : float
         The profile's mean square slope.
     friction_floor : float
-        ``μ`` is compared relative to ``max(|μ|, friction_floor·√m2)``.
+        ``μ`` and the dissipation are compared relative to ``max(|μ|, friction_floor·√m2)``
+        (:func:`friction_scale`).
 
     Returns
     -------
     tuple of float
-        The changes of ``Ã`` (relative to the fine grid's) and of ``μ``; a friction undefined
-        on both grids (no load) has changed by 0, on one of them by infinity.
+        The changes of ``Ã`` (relative to the fine grid's), of ``μ`` and of the dissipation; a
+        friction undefined on both grids (no load) has changed by 0, on one of them by
+        infinity.
     """
     d_area = abs(fine.area - coarse.area) / max(fine.area, 1e-300)
-    scale = max(abs(fine.friction), friction_floor * math.sqrt(max(m2, 0.0)), 1e-300)
-    d_mu = abs(fine.friction - coarse.friction) / scale
-    if not np.isfinite(d_mu):
-        d_mu = 0.0 if not (np.isfinite(fine.friction) or np.isfinite(coarse.friction)) else np.inf
-    return float(d_area), float(d_mu)
+    scale = friction_scale(fine.friction, m2, friction_floor)
+    return (float(d_area), _changed(coarse.friction, fine.friction, scale),
+            _changed(coarse.dissipation, fine.dissipation, scale))
 
 
-def estimate(change: tuple[float, float], previous: tuple[float, float] | None = None
-             ) -> tuple[float, float]:
-    """Relative error estimates of ``Ã`` and ``μ`` on the finer of two grids (ratio 2).
+def friction_scale(friction: float, m2: float, friction_floor: float) -> float:
+    """``max(|μ|, friction_floor·√m2)``: what the friction's estimate is relative to (μ
+    vanishes on an elastic solid)."""
+    mu = abs(friction) if np.isfinite(friction) else 0.0
+    return float(max(mu, friction_floor * math.sqrt(max(m2, 0.0)), 1e-300))
+
+
+def _changed(coarse: float, fine: float, scale: float) -> float:
+    change = abs(fine - coarse) / scale
+    if not np.isfinite(change):
+        return 0.0 if not (np.isfinite(fine) or np.isfinite(coarse)) else float(np.inf)
+    return float(change)
+
+
+def estimate(change: tuple[float, ...], previous: tuple[float, ...] | None = None
+             ) -> tuple[float, ...]:
+    """Relative error estimates of the measures (``Ã``, ``μ``, ...) on the finer of two grids
+    (ratio 2).
 
     Richardson: the change between the two grids over ``2^p - 1`` (``p = ORDER``), and at least
     the change between the two grids before over ``2^p (2^p - 1)`` (``previous``), so that a
@@ -58,7 +75,7 @@ def estimate(change: tuple[float, float], previous: tuple[float, float] | None =
     Returns
     -------
     tuple of float
-        The estimates for ``Ã`` and ``μ``.
+        The estimates, one per measure.
 
     Examples
     --------
@@ -69,4 +86,4 @@ def estimate(change: tuple[float, float], previous: tuple[float, float] | None =
     out = [c / factor for c in change]
     if previous is not None:
         out = [max(o, c / (factor * 2.0**ORDER)) for o, c in zip(out, previous)]
-    return float(out[0]), float(out[1])
+    return tuple(float(o) for o in out)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from .cohesive import GridLaw
-from .estimate import changes, estimate
+from .estimate import changes, estimate, friction_scale
 from .grid import UniformGrid, cells_inside, refine
 from .history import cohesive_grid_solve, record_approach
 from .measures import GridMeasures, measure
@@ -119,12 +119,14 @@ class Ladder:
         op = prep.operators.circulant(prep.kernel, grid.points)
         start_penetration = None if previous is None else previous.solution.penetration
         workers = method.workers or 1
+        dissipated = dict(loss=prep.operators.dissipation(prep.kernel, grid.points),
+                          amplitude=prep.shape.amplitude)
         if law is None:
             # the first grid starts from the solution for the operator's symmetric part
             sol = grid_solve(op, grid.heights, mean_pressure=self.load, penetration=self.pen,
                              start=start, start_penetration=start_penetration,
                              presolve=start is None, **self.options)
-            return sol, measure(grid, sol, op.eigenvalues, workers)
+            return sol, measure(grid, sol, op.eigenvalues, workers, **dissipated)
         history: dict = {}
         solved = cohesive_grid_solve(op, grid, law, self.load, self.pen, start,
                                      start_penetration, options=self.options,
@@ -134,7 +136,7 @@ class Ladder:
             record_approach(history, self.events, self.extras)
         return solved.solution, measure(grid, solved.solution, op.eigenvalues, workers,
                                         law=law, contact=solved.contact,
-                                        weights=solved.weights)
+                                        weights=solved.weights, **dissipated)
 
     def run(self, initial) -> tuple[GridMeasures, int, int]:
         """The grids in turn from a cold or a warm start (``initial``: a result or edges,
@@ -149,7 +151,8 @@ class Ladder:
             events.append(f"warm start: {int(np.sum(start > 0))} of {grid.points} cells loaded")
         previous, current = None, None
         iterations = applications = 0
-        errors, last = (np.inf, np.inf), None
+        errors: tuple[float, ...] = (np.inf, np.inf, np.inf)
+        last = None
         while True:
             sol, current = self.rung(grid, start, previous, initial is not None)
             iterations += sol.iterations
@@ -162,10 +165,12 @@ class Ladder:
                 errors = estimate(change, last)
                 last = change
             if previous is not None and grid.points >= target:
-                if max(errors) <= method.tolerance or 2 * grid.points > final:
+                # the tolerance is that of the results Ã and μ (the dissipation's estimate is
+                # reported beside them)
+                if max(errors[:2]) <= method.tolerance or 2 * grid.points > final:
                     break
-                events.append(f"estimate {max(errors):.2g} > tolerance at {grid.points} cells: "
-                              "grid doubled")
+                events.append(f"estimate {max(errors[:2]):.2g} > tolerance at {grid.points} "
+                              "cells: grid doubled")
             previous = current
             grid = UniformGrid.of(shape, 2 * grid.points)
             start = next_start(grid, current) if self.law is None else refine(sol.pressure)
@@ -176,13 +181,18 @@ class Ladder:
         """The estimate on the last grid (and the grid before) into ``extras``; an event when it
         misses the tolerance."""
         tolerance, extras = self.method.tolerance, self.extras
-        error = float(max(errors))
+        error = float(max(errors[:2]))
         extras.update(error_estimate=error, points=current.grid.points,
                       tolerance_met=bool(error <= tolerance),
-                      estimates={"area": float(errors[0]), "friction": float(errors[1])})
+                      estimates={"area": float(errors[0]), "friction": float(errors[1]),
+                                 "dissipation": float(errors[2]),
+                                 "friction_scale": friction_scale(
+                                     current.friction, self.prep.m2,
+                                     self.method.friction_floor)})
         if previous is not None:
             extras["coarse"] = {"points": previous.grid.points, "area": previous.area,
-                                "friction": previous.friction}
+                                "friction": previous.friction,
+                                "dissipation": previous.dissipation}
         if current.solution.converged and error > tolerance:
             self.events.append(f"tolerance {tolerance:g} not met: estimate {error:.2g} at "
                                f"{current.grid.points} cells")

@@ -1,5 +1,6 @@
 r"""What one grid solve of the spectral method gives: its contacts, their sub-cell edges, the
-area and the friction (:class:`GridMeasures`, :func:`measure`)."""
+area, the friction and the dissipated power's friction (:class:`GridMeasures`,
+:func:`measure`)."""
 from __future__ import annotations
 
 import attrs
@@ -9,13 +10,13 @@ from ...kernels.clausen import TWO_PI
 from .cohesive import GridLaw
 from .edges import contact_edges
 from .grid import UniformGrid
-from .operator import convolve
+from .operator import convolve, power
 from .solvers import GridSolution
 
 
 @attrs.frozen(kw_only=True, eq=False)
 class GridMeasures:
-    """What one grid solve gives: the solution, its contacts and the two integral measures.
+    """What one grid solve gives: the solution, its contacts and the integral measures.
 
     Attributes
     ----------
@@ -31,6 +32,9 @@ class GridMeasures:
         Cells in contact (the loaded ones, ``p > 0``; a cohesive law's contact cells).
     weights : ndarray or None
         Share of each cell under a cohesive law's stress (None: no law).
+    dissipation : float
+        ``μ`` from the power fed into the solid (:func:`~.operator.power`; NaN without load or
+        without the loss weights), the power balance's side of the friction.
     """
 
     grid: UniformGrid
@@ -40,6 +44,7 @@ class GridMeasures:
     friction: float
     contact: np.ndarray
     weights: np.ndarray | None = None
+    dissipation: float = float("nan")
 
     @property
     def closed(self) -> bool:
@@ -48,7 +53,8 @@ class GridMeasures:
 
 
 def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int = 1,
-            law: GridLaw | None = None, contact=None, weights=None) -> GridMeasures:
+            law: GridLaw | None = None, contact=None, weights=None, loss=None,
+            amplitude: float = 1.0) -> GridMeasures:
     """Contacts, area (sub-cell edges) and friction (eq. 4.16) of a grid solution.
 
     With a cohesive ``law`` the contacts are the cells ``contact`` and their edges are located
@@ -67,6 +73,9 @@ def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int
     law : GridLaw, optional
         A cohesive law; then ``contact`` and ``weights`` are its solution's
         (:class:`~.cohesive.CohesiveSolution`).
+    loss : ndarray, optional
+        The grid's loss weights (:func:`~.operator.dissipation_weights`) for the dissipated
+        power's friction, with the profile's ``amplitude``.
     """
     p = solution.pressure
     pm = float(p.mean())
@@ -75,7 +84,9 @@ def measure(grid: UniformGrid, solution: GridSolution, eigenvalues, workers: int
     # a cohesive law's load may be tensile
     defined = pm > 0 if law is None else pm != 0
     mu = float(-(p @ grid.rise) / (TWO_PI * pm)) if defined else float("nan")
-    extra = dict(contact=contact, weights=weights)
+    dissipated = (amplitude * power(p, loss, workers) / pm if defined and loss is not None
+                  else float("nan"))
+    extra = dict(contact=contact, weights=weights, dissipation=dissipated)
     if np.all(contact):
         return GridMeasures(grid=grid, solution=solution, edges=np.zeros((0, 2)), area=TWO_PI,
                             friction=mu, **extra)
