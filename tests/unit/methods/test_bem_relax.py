@@ -1,13 +1,16 @@
 """The jump rule: the edges' overdamped motion lands where Johnson's wavy contact says, on the
 side of the unstable root it starts from, and the landing does not depend on the integration
 tolerance."""
+import attrs
 import numpy as np
 import pytest
 from scipy.optimize import brentq
 
 import viscocontact as vc
+from viscocontact.methods.bem import BEM
 from viscocontact.methods.bem.relax import RelaxFrom, Relaxation
 from viscocontact.problem import ContactProblem
+from viscocontact.profiles import Modes, SpectralProfile
 from viscocontact.reference.johnson import JohnsonWavy
 
 GAMMA, AMPLITUDE, LOAD = 0.02, 0.05, 0.3
@@ -75,3 +78,31 @@ def test_a_motion_that_slows_down_past_a_fold_goes_on_through_it():
     assert any(e.startswith("the edges' motion slowed down past a fold")
                for e in r.extras["events"])
     assert r.n_contacts == 4 and r.area == pytest.approx(0.6084087, rel=1e-6)
+
+
+@attrs.frozen
+class _TwoPeaks(SpectralProfile):
+    """Two asperities a period: ``Λ̃ (0.2 cos x̃ + cos 2x̃)``."""
+
+    amplitude: float = 0.05
+
+    @property
+    def modes(self) -> Modes:
+        return Modes(wavenumbers=[1, 2], amplitudes=[0.2 * self.amplitude, self.amplitude],
+                     phases=[0.0, 0.0])
+
+
+@pytest.mark.parametrize("penetration", [0.5, 0.6])
+@pytest.mark.parametrize("start", [(-0.3, np.pi + 0.3), (-0.8, np.pi + 0.8)])
+def test_a_contact_at_rest_that_carries_tension_splits_and_moves_on(penetration, start):
+    """One contact over both asperities (adhesionless, elastic): its edges come to rest with
+    tension over the valley between the peaks, the contact splits there, and the motion of the
+    parts ends at the unique adhesionless equilibrium, the one the approach from first touch
+    reaches (to the solver's tolerance)."""
+    problem = ContactProblem(profile=_TwoPeaks(), rheology=vc.Elastic(), solver=vc.Newton(),
+                             penetration=penetration, method=BEM())
+    moved = problem.solve(initial=RelaxFrom(list(start)))
+    assert moved.converged and moved.n_contacts == 2
+    assert [r["kind"] for r in moved.extras["path_events"]] == ["split"]
+    assert any("split where it carried tension" in e for e in moved.extras["events"])
+    assert moved.area == pytest.approx(problem.solve().area, rel=1e-7)

@@ -26,8 +26,10 @@ fold, where the root is gone, it fails fast and the motion goes on). Just past a
 slow down where the root has vanished (a bottleneck whose residual can fall below the rest
 level); where the equilibrium solve finds no root at rest, the motion goes on through it. Where the profile penetrates
 at its root, contacts are born there, at zero size, and the motion goes on with them (a born
-contact grows as every edge moves), so that merges, detachments and births all happen on the
-way, as the motion makes them.
+contact grows as every edge moves); where a contact at rest carries more tension than the
+interface holds (any, without adhesion; the cohesive stress σ̃0 under a cohesive law), it
+splits there and the motion goes on with its parts. So merges, detachments, births and splits
+all happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
@@ -39,12 +41,14 @@ import numpy as np
 
 from ...contact.mesh import same_zones, zone_patterns
 from ...contact.topology import TWO_PI, TopologyChange, repair
+from .checks import tensile_split
 from .path import STEP_REDUCTION
+from .restarts import split_strength
 from .sets import MIN_GAP, MIN_WIDTH, Control
 from .state import Outcome, State
 
 #: The flow ends, and the equilibrium solve finishes, once ``max|r|`` is below this many times
-#: the solver's residual tolerance.
+#: the solver's residual tolerance (or the residuals' round-off floor, where that is higher).
 SETTLED = 1e3
 #: The largest step times the fastest growth rate of an unstable mode of the motion.
 UNSTABLE_STEP = 0.5
@@ -145,12 +149,14 @@ class Relaxation:
         self.max_steps = max_steps
         self.trial = dict(trial or {})
         self._finish: dict = {}
+        self._splits: list = []      # the contact sets made by splits in the current motion
 
     def run(self, edges, control: Control, final: bool = True) -> State:
         """The state the edges' motion from ``edges`` ends in (not converged, with the reason,
         when the motion does not end). ``final = False``: an intermediate state of a path,
         solved to :data:`~.path.STEP_REDUCTION` of its start's residual and not polished."""
         systems = _Systems()
+        self._splits = []
         self._finish = ({} if final else
                         {"polish": False, "refine": False, "reduction": STEP_REDUCTION})
         x = np.asarray(edges, dtype=float).copy()
@@ -160,7 +166,7 @@ class Relaxation:
                 if isinstance(out, State):
                     return out
                 x = out             # contacts were born: the motion goes on with them
-            return self._failed(x, f"met more than {self.max_steps} births")
+            return self._failed(x, f"met more than {self.max_steps} births and splits")
         finally:
             self.eq.log.evaluations += systems.evaluations
 
@@ -172,8 +178,10 @@ class Relaxation:
                 trial: bool = False) -> State | np.ndarray | None:
         """The equilibrium solve from ``x`` with its contact set held: the state; or, where
         the profile penetrates at that state's root, the edges with the contacts born there
-        added (they grow by the motion, like every edge); or None when the solve met a merge
-        or a split (the motion makes those). ``trial``: with the :attr:`trial` budgets."""
+        added, or where a contact's tension exceeds what the interface holds, the edges with it
+        split there (the new edges move by the motion, like every edge; a split whose parts
+        merged again twice is a cycle, a failed state); or None when the solve met a merge (the
+        motion makes those). ``trial``: with the :attr:`trial` budgets."""
         eq = self.eq
         out = eq.solve(x, control, use_fallback=False, changes=False, **self._finish,
                        **(self.trial if trial else {}))
@@ -186,6 +194,28 @@ class Relaxation:
             eq.log.records.append({"kind": "birth", "control": control.value,
                                    "contacts": float(len(regions))})
             return State.full_contact() if full else edges
+        if out.change == "split" and out.fields is not None:
+            strength = split_strength(eq)
+            split, where, tension = tensile_split(out.fields, strength=strength)
+            place = ("where it carried tension" if strength == 0.0
+                     else "where its tension exceeded the cohesive stress")
+            if split is not None:
+                edges, _, _, full = repair(split, MIN_WIDTH, MIN_GAP)
+                if sum(len(edges) == len(y) and np.allclose(edges, y, rtol=0, atol=1e-3)
+                       for y in self._splits) >= 2:
+                    # the parts merged again, and the merged contact splits at the same
+                    # place: the motion has no state to end in with this contact set
+                    return State(outcome=Outcome.NOT_CONVERGED, edges=out.edges,
+                                 change="cycle", message=f"contact set cycles: a contact split "
+                                         f"{place} (up to {tension:.2g} of the largest "
+                                         "stress) and its parts merged again, three times")
+                self._splits.append(edges)
+                if not full and len(edges) > len(out.edges):
+                    eq.log.event(f"{len(where)} contact(s) split {place} (up to "
+                                 f"{tension:.2g} of the largest stress)")
+                    eq.log.records.append({"kind": "split", "control": control.value,
+                                           "contacts": float(len(where))})
+                    return edges
         return None if out.change else out
 
     def _run(self, x: np.ndarray, control: Control,
@@ -195,13 +225,12 @@ class Relaxation:
         otherwise (closure, detachment, a failure)."""
         m = _Motion(system=self.eq.system(control, x), x=x)
         systems.append(m.system)
-        settled = SETTLED * self.eq.tolerances.residual
         m.r = self._residual(m.system, x)
         for _ in range(self.max_steps):
             if m.r is None:
                 return self._failed(m.x, "met a contact set without a valid field")
             size = float(np.max(np.abs(m.r)))
-            near = size <= min(settled, m.ghost)
+            near = size <= min(SETTLED * self._resolved(m), m.ghost)
             if (near or m.early) and m.rezoned < REZONED and self._rezone(m, control, systems):
                 continue
             if near:
@@ -225,6 +254,14 @@ class Relaxation:
                 return out
         return self._failed(m.x, f"did not stop within {self.max_steps} steps")
 
+    def _resolved(self, m: "_Motion") -> float:
+        """The smallest ``max|r|`` the residuals of the motion's system resolve: the solver's
+        tolerance, or their round-off floor where that is higher (:meth:`Equilibrium.
+        noise_floor`; energy balances over δX on a glassy solid carry 1e-10 to 1e-8). A motion
+        held to less never comes to rest: on campaign seed 84 (a sinusoid on an SLS with
+        β = 425) the edges stood still at max|r| of 7e-9 to 1e-7 for 2000 steps."""
+        return self.eq.noise_floor(m.system, m.x, self.eq.tolerances).residual
+
     def _rezone(self, m: "_Motion", control: Control, systems: "_Systems") -> bool:
         """Whether the edges, at rest, have moved out of the mesh zones they were solved with
         (which the equilibrium solve would remake): then the motion goes on, on new ones."""
@@ -241,8 +278,8 @@ class Relaxation:
         self.eq.log.event(f"the edges moved in {m.moved} steps of their overdamped motion")
         out = self._settle(m.x, control)
         if out is None:
-            # at rest, the held solve meets a merge or a split (a tensile contact, which no edge
-            # motion opens): the equilibrium solve makes it
+            # at rest, the held solve meets a merge (or a split that the tension check does not
+            # confirm): the equilibrium solve makes it
             self.eq.log.event("the edges came to rest next to a change of the contact set")
             return self.eq.solve(m.x, control, use_fallback=False, **self._finish)
         return out

@@ -16,6 +16,7 @@ import numpy as np
 from ...adhesion.none import NoAdhesion
 from ...contact.mesh import element_counts, same_zones, zone_patterns
 from ...contact.topology import TopologyChange, repair
+from ...solvers.base import Status
 from .checks import tensile_split
 from .sets import MIN_GAP, MIN_WIDTH, Control
 from .state import Outcome, State
@@ -110,6 +111,15 @@ class Restarts:
                          f"{type(eq.fallback).__name__} takes over")
             start = res.x if np.all(np.isfinite(res.x)) else edges
             res = eq.fallback.solve(system, start, self.fallback_tolerances)
+        if not res.converged and res.status is Status.STALLED and not call.probation:
+            # (a solve on probation stops early by design: near a fold, far above the floor)
+            raised = eq.stalled_at_floor(system, res.x, res.residual_norm, self.tolerances)
+            if raised is not None:
+                # stalled within what the residuals resolve there: converged at that floor
+                self.tolerances = raised
+                res = attrs.evolve(res, converged=True, status=Status.CONVERGED,
+                                   message=f"{res.message}; within the round-off floor "
+                                           f"{raised.residual:.2g} measured there")
         return res
 
     def changed(self, change: TopologyChange, system, edges) -> State | np.ndarray:
@@ -222,8 +232,7 @@ class Restarts:
         adhesion of vanishing range (no flaw to open from), beyond σ̃0 for a cohesive law. The
         state or the edges to restart from; None when no contact opens."""
         eq, log = self.eq, self.eq.log
-        strength = (0.0 if isinstance(eq.adhesion, NoAdhesion)
-                    else eq.adhesion.closed_strength(eq.prep.shape.amplitude))
+        strength = split_strength(eq)
         split, where, tension = ((None, [], 0.0) if not np.isfinite(strength)
                                  else tensile_split(fields, strength=strength))
         if split is None:
@@ -282,6 +291,15 @@ class Restarts:
             "pressure whose sign the mesh does not resolve")
         self.splits.clear()
         return x
+
+
+def split_strength(eq) -> float:
+    """The tension inside a contact beyond which it splits: none for adhesion of vanishing
+    range (0 without adhesion; infinite for the energy balance, whose closed interface has no
+    flaw to open from), the cohesive stress σ̃0 for a cohesive law."""
+    if isinstance(eq.adhesion, NoAdhesion):
+        return 0.0
+    return eq.adhesion.closed_strength(eq.prep.shape.amplitude)
 
 
 def _not_converged(x, fields, ctx, size, message) -> State:
