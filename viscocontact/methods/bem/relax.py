@@ -165,7 +165,7 @@ class Relaxation:
                 out = self._run(x, control, systems)
                 if isinstance(out, State):
                     return out
-                x = out             # contacts were born: the motion goes on with them
+                x = out             # contacts were born or split: the motion goes on with them
             return self._failed(x, f"met more than {self.max_steps} births and splits")
         finally:
             self.eq.log.evaluations += systems.evaluations
@@ -257,9 +257,9 @@ class Relaxation:
     def _resolved(self, m: "_Motion") -> float:
         """The smallest ``max|r|`` the residuals of the motion's system resolve: the solver's
         tolerance, or their round-off floor where that is higher (:meth:`Equilibrium.
-        noise_floor`; energy balances over δX on a glassy solid carry 1e-10 to 1e-8). A motion
-        held to less never comes to rest: on campaign seed 84 (a sinusoid on an SLS with
-        β = 425) the edges stood still at max|r| of 7e-9 to 1e-7 for 2000 steps."""
+        noise_floor`; energy balances over δX on a glassy solid carry 1e-10 to 1e-8), as the
+        equilibrium solve that finishes the motion takes it: below it the edges stand still
+        at a residual of noise."""
         return self.eq.noise_floor(m.system, m.x, self.eq.tolerances).residual
 
     def _rezone(self, m: "_Motion", control: Control, systems: "_Systems") -> bool:
