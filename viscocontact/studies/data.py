@@ -385,7 +385,7 @@ class StudyData:
                 values, fill = values.astype(float), np.nan
             variables[column] = (dims, _on_grid(values, index, shape, fill))
         if self.kind == "cycle":
-            variables.update(self._metrics_on(grid, shape[:3], dims[:3]))
+            variables.update(_metrics_on(self.cycles(), grid, shape[:3], dims[:3]))
             by_gamma = {at[1]: c.labels["variant"] for at, c in zip(grid, chains)}
             coords["variant"] = ("gamma", [by_gamma[i] for i in sorted(by_gamma)])
         data = xr.Dataset(variables, coords=coords, attrs=self._attrs())
@@ -405,17 +405,6 @@ class StudyData:
                                          "steps that its study does not have")
         return [(grid[int(c)], int(k)) for c, k in zip(chain, step)]
 
-    def _metrics_on(self, grid, shape, dims) -> dict:
-        from .cycle import CycleMetrics
-
-        names = [f.name for f in attrs.fields(CycleMetrics)]
-        out = {n: np.full(shape, False if n == "detached" else np.nan) for n in names}
-        for at, cyc in zip(grid, self.cycles()):
-            if cyc["metrics"] is not None:
-                for n in names:
-                    out[n][at] = getattr(cyc["metrics"], n)
-        return {n: (dims, v) for n, v in out.items()}
-
     def _attrs(self) -> dict:
         """Attributes that survive netCDF (strings and numbers)."""
         out = {"kind": self.kind, "scene": self.scene_toml, "study": json.dumps(self.params),
@@ -424,6 +413,20 @@ class StudyData:
         if self.kind == "sweep":
             out["control"] = self.params["control"]
         return out
+
+
+def _metrics_on(cycles: list, grid, shape: tuple, dims) -> dict:
+    """The cycles' metrics (:class:`~.cycle.CycleMetrics`) at their ``grid`` positions on
+    arrays of ``shape``, as xarray ``(dims, values)`` pairs."""
+    from .cycle import CycleMetrics
+
+    names = [f.name for f in attrs.fields(CycleMetrics)]
+    out = {n: np.full(shape, False if n == "detached" else np.nan) for n in names}
+    for at, cyc in zip(grid, cycles):
+        if cyc["metrics"] is not None:
+            for n in names:
+                out[n][at] = getattr(cyc["metrics"], n)
+    return {n: (dims, v) for n, v in out.items()}
 
 
 def _on_grid(values: np.ndarray, index: tuple, shape: tuple, fill) -> np.ndarray:

@@ -225,7 +225,7 @@ class Relaxation:
         otherwise (closure, detachment, a failure)."""
         m = _Motion(system=self.eq.system(control, x), x=x)
         systems.append(m.system)
-        m.r = self._residual(m.system, x)
+        m.r = _residual(m.system, x)
         for _ in range(self.max_steps):
             if m.r is None:
                 return self._failed(m.x, "met a contact set without a valid field")
@@ -244,7 +244,7 @@ class Relaxation:
                 self.eq.log.event("the edges' motion slowed down past a fold, where no "
                                   "equilibrium is: it goes on")
             if m.J is None or m.age >= JACOBIAN_AGE:
-                m.J, m.age = self._jacobian(m.system, m.x), 0
+                m.J, m.age = _jacobian(m.system, m.x), 0
                 if m.J is None:
                     return self._failed(m.x, "met a contact set without derivatives")
             out = self._shortcut(m, control)
@@ -270,7 +270,7 @@ class Relaxation:
             return False
         m.system, m.J, m.rezoned = fresh, None, m.rezoned + 1
         systems.append(fresh)
-        m.r = self._residual(fresh, m.x)
+        m.r = _residual(fresh, m.x)
         return True
 
     def _at_rest(self, m: "_Motion", control: Control) -> State | np.ndarray:
@@ -312,8 +312,8 @@ class Relaxation:
             m.h = 0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(m.r), 1e-300)))
         # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign
         # past 2/h): the step resolves the growth of every unstable mode of the motion
-        m.h = min(m.h, UNSTABLE_STEP / self._growth(m.J))
-        move = self._step(m.r, m.J, m.h)
+        m.h = min(m.h, UNSTABLE_STEP / _growth(m.J))
+        move = _step(m.r, m.J, m.h)
         if move is None:
             m.h, m.J = 0.25 * m.h, None
             return None
@@ -321,7 +321,7 @@ class Relaxation:
         if full or not landed.size:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
-        r = self._residual(after, landed)
+        r = _residual(after, landed)
         if r is None:
             # no field at the step's end (a Maugis-Dugdale zone's equations): a shorter step
             m.h, m.J = 0.25 * m.h, None
@@ -350,7 +350,7 @@ class Relaxation:
             m.track = m.track[-1:]
             m.system, m.J = after, None
             systems.append(after)
-        if self._travels(m.track):
+        if _travels(m.track):
             return self._failed(m.x, "carries the contacts round the period: no steady "
                                      "state at this control")
         return None
@@ -380,30 +380,6 @@ class Relaxation:
             return None
         return eq.system(control, x)
 
-    @staticmethod
-    def _travels(track: list) -> bool:
-        """Whether the contacts have moved round a whole period of the profile without
-        settling: a contact that travels along the profile (a trailing edge that drags it), which
-        a steady state does not do."""
-        return len(track) > 1 and abs(track[-1][1] - track[0][1]) > TWO_PI
-
-    @staticmethod
-    def _residual(system, x):
-        """``r`` at ``x`` (None where ``x`` is no valid contact set)."""
-        try:
-            r = system.residual(x)
-        except TopologyChange:
-            return None
-        return r if r is not None and np.all(np.isfinite(r)) else None
-
-    @staticmethod
-    def _jacobian(system, x):
-        try:
-            J = system.jacobian(x)
-        except TopologyChange:
-            return None
-        return J if J is not None and np.all(np.isfinite(J)) else None
-
     def _newton_start(self, system, r, J, x) -> np.ndarray | None:
         """Newton's step from ``x`` when the motion ends at the root it heads for: every mode
         of the motion decays, the step is within :data:`NEWTON_REACH` half-widths and keeps
@@ -412,7 +388,7 @@ class Relaxation:
         linearisation holds and the flow, like Newton's iteration, converges to that root; a
         state at a fold, whose root is gone, fails the contraction. One residual evaluation;
         None when the test fails."""
-        if self._growth(J) > 1e-300:
+        if _growth(J) > 1e-300:
             return None
         try:
             first = np.linalg.solve(J, -r)
@@ -425,7 +401,7 @@ class Relaxation:
         landed, changed, _, full = repair(x + first, MIN_WIDTH, MIN_GAP)
         if changed or full:
             return None
-        r1 = self._residual(system, landed)
+        r1 = _residual(system, landed)
         if r1 is None:
             return None
         try:
@@ -436,24 +412,49 @@ class Relaxation:
             return None
         return landed
 
-    @staticmethod
-    def _growth(J) -> float:
-        """The fastest growth rate of the linearised motion ``dδ/dt = -O J δ`` (0 when every
-        mode decays)."""
-        o = np.tile([-1.0, 1.0], len(J) // 2)
-        try:
-            rates = -np.linalg.eigvals(o[:, None] * J).real
-        except np.linalg.LinAlgError:
-            return 0.0
-        return float(max(rates.max(initial=0.0), 1e-300))
 
-    @staticmethod
-    def _step(r, J, h):
-        """The linearly implicit Euler move ``δ`` of ``dX/dt = -O r`` over ``h``."""
-        o = np.tile([-1.0, 1.0], len(r) // 2)
-        a = np.eye(len(r)) / h + o[:, None] * J
-        try:
-            move = np.linalg.solve(a, -o * r)
-        except np.linalg.LinAlgError:
-            return None
-        return move if np.all(np.isfinite(move)) else None
+def _travels(track: list) -> bool:
+    """Whether the contacts have moved round a whole period of the profile without
+    settling: a contact that travels along the profile (a trailing edge that drags it), which
+    a steady state does not do."""
+    return len(track) > 1 and abs(track[-1][1] - track[0][1]) > TWO_PI
+
+
+def _residual(system, x):
+    """``r`` at ``x`` (None where ``x`` is no valid contact set)."""
+    try:
+        r = system.residual(x)
+    except TopologyChange:
+        return None
+    return r if r is not None and np.all(np.isfinite(r)) else None
+
+
+def _jacobian(system, x):
+    """``∂r/∂x`` at ``x`` (None where ``x`` is no valid contact set or it is not finite)."""
+    try:
+        J = system.jacobian(x)
+    except TopologyChange:
+        return None
+    return J if J is not None and np.all(np.isfinite(J)) else None
+
+
+def _growth(J) -> float:
+    """The fastest growth rate of the linearised motion ``dδ/dt = -O J δ`` (0 when every
+    mode decays)."""
+    o = np.tile([-1.0, 1.0], len(J) // 2)
+    try:
+        rates = -np.linalg.eigvals(o[:, None] * J).real
+    except np.linalg.LinAlgError:
+        return 0.0
+    return float(max(rates.max(initial=0.0), 1e-300))
+
+
+def _step(r, J, h):
+    """The linearly implicit Euler move ``δ`` of ``dX/dt = -O r`` over ``h``."""
+    o = np.tile([-1.0, 1.0], len(r) // 2)
+    a = np.eye(len(r)) / h + o[:, None] * J
+    try:
+        move = np.linalg.solve(a, -o * r)
+    except np.linalg.LinAlgError:
+        return None
+    return move if np.all(np.isfinite(move)) else None
