@@ -36,6 +36,8 @@ from, not of a search order; a tenth of the tolerance gives the same landing (te
 """
 from __future__ import annotations
 
+from typing import Any
+
 import attrs
 import numpy as np
 
@@ -99,7 +101,7 @@ class _Systems:
 class _Motion:
     """The integrator's state of one motion of a contact set."""
 
-    system: object
+    system: Any                         # the EdgeSystem the motion is evaluated on
     x: np.ndarray
     r: np.ndarray | None = None
     h: float | None = None              # the next step
@@ -225,7 +227,7 @@ class Relaxation:
         otherwise (closure, detachment, a failure)."""
         m = _Motion(system=self.eq.system(control, x), x=x)
         systems.append(m.system)
-        m.r = _residual(m.system, x)
+        m.r = _valid(m.system.residual, x)
         for _ in range(self.max_steps):
             if m.r is None:
                 return self._failed(m.x, "met a contact set without a valid field")
@@ -244,7 +246,7 @@ class Relaxation:
                 self.eq.log.event("the edges' motion slowed down past a fold, where no "
                                   "equilibrium is: it goes on")
             if m.J is None or m.age >= JACOBIAN_AGE:
-                m.J, m.age = _jacobian(m.system, m.x), 0
+                m.J, m.age = _valid(m.system.jacobian, m.x), 0
                 if m.J is None:
                     return self._failed(m.x, "met a contact set without derivatives")
             out = self._shortcut(m, control)
@@ -270,7 +272,7 @@ class Relaxation:
             return False
         m.system, m.J, m.rezoned = fresh, None, m.rezoned + 1
         systems.append(fresh)
-        m.r = _residual(fresh, m.x)
+        m.r = _valid(fresh.residual, m.x)
         return True
 
     def _at_rest(self, m: "_Motion", control: Control) -> State | np.ndarray:
@@ -321,7 +323,7 @@ class Relaxation:
         if full or not landed.size:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
-        r = _residual(after, landed)
+        r = _valid(after.residual, landed)
         if r is None:
             # no field at the step's end (a Maugis-Dugdale zone's equations): a shorter step
             m.h, m.J = 0.25 * m.h, None
@@ -401,7 +403,7 @@ class Relaxation:
         landed, changed, _, full = repair(x + first, MIN_WIDTH, MIN_GAP)
         if changed or full:
             return None
-        r1 = _residual(system, landed)
+        r1 = _valid(system.residual, landed)
         if r1 is None:
             return None
         try:
@@ -420,22 +422,14 @@ def _travels(track: list) -> bool:
     return len(track) > 1 and abs(track[-1][1] - track[0][1]) > TWO_PI
 
 
-def _residual(system, x):
-    """``r`` at ``x`` (None where ``x`` is no valid contact set)."""
+def _valid(evaluate, x):
+    """``evaluate(x)`` (a system's residual or Jacobian), or None where ``x`` is no valid
+    contact set or the value is not finite."""
     try:
-        r = system.residual(x)
+        value = evaluate(x)
     except TopologyChange:
         return None
-    return r if r is not None and np.all(np.isfinite(r)) else None
-
-
-def _jacobian(system, x):
-    """``∂r/∂x`` at ``x`` (None where ``x`` is no valid contact set or it is not finite)."""
-    try:
-        J = system.jacobian(x)
-    except TopologyChange:
-        return None
-    return J if J is not None and np.all(np.isfinite(J)) else None
+    return value if value is not None and np.all(np.isfinite(value)) else None
 
 
 def _growth(J) -> float:
