@@ -40,6 +40,7 @@ class Climb:
         self.unit = max(1.0, self.scale(state, self.load, 1.0))
         self.bracket: tuple | None = None  # (value past the event, kind, width, gap there)
         self.aim: float | None = None                # the event's predicted place inside it
+        self.retained = False       # a step inside the bracket kept its far end already
 
     def run(self) -> State:
         """Follow the branch to the target in steps of the controlled quantity."""
@@ -100,6 +101,12 @@ class Climb:
                                        trial.edges)
             self.below, self.state, self.v = state, trial, v_next
             if self.bracket is not None and self.bracket[1] == "birth":
+                if self.retained:
+                    # the bracket's far end kept twice in a row: its gap halved (the Illinois
+                    # variant of the false position, which otherwise converges only linearly
+                    # on a curved gap: four to six steps a birth on the rough profile)
+                    self.bracket = (*self.bracket[:3], 0.5 * self.bracket[3])
+                self.retained = True
                 self.aim = self.birth_ahead(trial, v_next, self.bracket)
             return
         del eq.log.records[logged:]     # (a step past an event is not on the path)
@@ -109,6 +116,7 @@ class Climb:
             self.step = 0.5 * abs(v_next - v) / self.unit
             return
         self.bracket, self.aim = (v_next, event, opt.smallest, trial.gap), None
+        self.retained = False
         if event == "fold" and eq.adhesive:
             self.aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
         elif event == "birth":

@@ -15,7 +15,8 @@ positive residual recedes. The flow is integrated by linearly implicit Euler ste
 ``h²/2·Ẍ`` estimated as ``h/2`` times the change of the edges' speed over the step (one
 residual a step), is within ``tolerance`` of its contact's half-width (or of the mean
 half-width, when that is larger; a step after a rejected one does not grow); contacts that
-meet merge, contacts that vanish detach, contacts that close over the period close. As the
+meet merge, contacts that vanish detach, contacts that close over the period close (the mesh
+zones follow the edges: a step that moves them out of their zones ends on new ones). As the
 edges slow down the steps grow and become Newton's; once every mode of the motion decays and
 Newton's iteration from the state contracts (its second step at most
 :data:`NEWTON_CONTRACTION` of its first, which is within :data:`NEWTON_REACH` half-widths: the
@@ -54,8 +55,9 @@ from .state import Outcome, State
 SETTLED = 1e3
 #: The largest step times the fastest growth rate of an unstable mode of the motion.
 UNSTABLE_STEP = 0.5
-#: The motion's mesh zones are remade for its edges at most this many times in one motion, when
-#: the motion nears its end (the equilibrium solve would remake them).
+#: The motion's mesh zones are remade for its edges at most this many times in one motion: in
+#: its first steps, which move the edges the most (the step's end is then evaluated on the new
+#: zones alone), and when it nears its end (the equilibrium solve would remake them).
 REZONED = 4
 #: Newton's step from a state of the motion is tested for the root the motion heads for when
 #: it moves no edge more than this many half-widths of its contact.
@@ -91,6 +93,10 @@ class _Systems:
         if self._current is not None:
             self._done += self._current.evaluations
         self._current = system
+
+    def discard(self, system) -> None:
+        """Count the evaluations of a system the motion did not take."""
+        self._done += system.evaluations
 
     @property
     def evaluations(self) -> int:
@@ -233,7 +239,7 @@ class Relaxation:
                 return self._failed(m.x, "met a contact set without a valid field")
             size = float(np.max(np.abs(m.r)))
             near = size <= min(SETTLED * self._resolved(m), m.ghost)
-            if (near or m.early) and m.rezoned < REZONED and self._rezone(m, control, systems):
+            if near and m.rezoned < REZONED and self._rezone(m, control, systems):
                 continue
             if near:
                 rest = self._at_rest(m, control)
@@ -288,14 +294,14 @@ class Relaxation:
 
     def _shortcut(self, m: "_Motion", control: Control) -> State | np.ndarray | None:
         """The equilibrium the motion heads for, when Newton's iteration from here reaches it
-        (:meth:`_newton_start`; tested again once ``max|r|`` has halved); else None."""
+        (:func:`_newton_start`; tested again once ``max|r|`` has halved); else None."""
         if m.r is None or m.J is None:
             return None
         size = float(np.max(np.abs(m.r)))
         if size > m.tested:
             return None
         m.tested = 0.5 * size
-        start = self._newton_start(m.system, m.r, m.J, m.x)
+        start = _newton_start(m.system, m.r, m.J, m.x)
         if start is None:
             return None
         out = self._settle(start, control, trial=True)
@@ -323,19 +329,25 @@ class Relaxation:
         if full or not landed.size:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
+        fresh = None
+        if not changed and m.early and m.rezoned < REZONED:
+            # the edges moved out of the mesh zones they were solved with: the step's end is
+            # evaluated on new ones (a remade mesh changes the residual by its discretisation
+            # error, which the step's error measure then holds too)
+            fresh = self._fresh(m.system, landed, control)
+            after = fresh if fresh is not None else after
         r = _valid(after.residual, landed)
-        if r is None:
-            # no field at the step's end (a Maugis-Dugdale zone's equations): a shorter step
-            m.h, m.J = 0.25 * m.h, None
-            return None
         # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
         # the speed -O r over the step (one residual a step: the one the next step needs);
         # a step that changes the contact set is taken as it is (the set's change is the
         # motion's event)
-        error = 0.0 if changed else float(np.max(0.5 * m.h * np.abs(r - m.r) / _scale(m.x)))
+        error = np.inf if r is None else _local_error(m, r, changed)
         if error > self.tolerance:
-            m.h, m.J = m.h * max(0.2, 0.9 * np.sqrt(self.tolerance / error)), None
-            m.rejected = True
+            if after is not m.system:
+                systems.discard(after)      # a step not taken: its new system is let go
+            # no field at the step's end (a Maugis-Dugdale zone's equations): a quarter step
+            m.h *= 0.25 if r is None else max(0.2, 0.9 * np.sqrt(self.tolerance / error))
+            m.J, m.rejected = None, r is not None
             return None
         # the step after a rejected one does not grow (Hairer, Nørsett & Wanner I, II.4):
         # while the edges accelerate, a grown step is rejected again
@@ -352,6 +364,9 @@ class Relaxation:
             m.track = m.track[-1:]
             m.system, m.J = after, None
             systems.append(after)
+        elif fresh is not None:
+            m.system, m.rezoned = fresh, m.rezoned + 1
+            systems.append(fresh)
         if _travels(m.track):
             return self._failed(m.x, "carries the contacts round the period: no steady "
                                      "state at this control")
@@ -382,37 +397,46 @@ class Relaxation:
             return None
         return eq.system(control, x)
 
-    def _newton_start(self, system, r, J, x) -> np.ndarray | None:
-        """Newton's step from ``x`` when the motion ends at the root it heads for: every mode
-        of the motion decays, the step is within :data:`NEWTON_REACH` half-widths and keeps
-        the contact set, and a second (simplified) step from there is at most
-        :data:`NEWTON_CONTRACTION` times the first, so that the state lies where the
-        linearisation holds and the flow, like Newton's iteration, converges to that root; a
-        state at a fold, whose root is gone, fails the contraction. One residual evaluation;
-        None when the test fails."""
-        if _growth(J) > 1e-300:
-            return None
-        try:
-            first = np.linalg.solve(J, -r)
-        except np.linalg.LinAlgError:
-            return None
-        scale = _scale(x)
-        step = float(np.max(np.abs(first) / scale))
-        if not step <= NEWTON_REACH:
-            return None
-        landed, changed, _, full = repair(x + first, MIN_WIDTH, MIN_GAP)
-        if changed or full:
-            return None
-        r1 = _valid(system.residual, landed)
-        if r1 is None:
-            return None
-        try:
-            second = np.linalg.solve(J, -r1)
-        except np.linalg.LinAlgError:
-            return None
-        if float(np.max(np.abs(second) / scale)) > NEWTON_CONTRACTION * step:
-            return None
-        return landed
+
+def _newton_start(system, r, J, x) -> np.ndarray | None:
+    """Newton's step from ``x`` when the motion ends at the root it heads for: every mode
+    of the motion decays, the step is within :data:`NEWTON_REACH` half-widths and keeps
+    the contact set, and a second (simplified) step from there is at most
+    :data:`NEWTON_CONTRACTION` times the first, so that the state lies where the
+    linearisation holds and the flow, like Newton's iteration, converges to that root; a
+    state at a fold, whose root is gone, fails the contraction. One residual evaluation;
+    None when the test fails."""
+    if _growth(J) > 1e-300:
+        return None
+    try:
+        first = np.linalg.solve(J, -r)
+    except np.linalg.LinAlgError:
+        return None
+    scale = _scale(x)
+    step = float(np.max(np.abs(first) / scale))
+    if not step <= NEWTON_REACH:
+        return None
+    landed, changed, _, full = repair(x + first, MIN_WIDTH, MIN_GAP)
+    if changed or full:
+        return None
+    r1 = _valid(system.residual, landed)
+    if r1 is None:
+        return None
+    try:
+        second = np.linalg.solve(J, -r1)
+    except np.linalg.LinAlgError:
+        return None
+    if float(np.max(np.abs(second) / scale)) > NEWTON_CONTRACTION * step:
+        return None
+    return landed
+
+
+def _local_error(m: "_Motion", r: np.ndarray, changed: bool) -> float:
+    """The local error of the step to the residual ``r``, in half-widths (0 for a step
+    that changes the contact set)."""
+    if changed or m.h is None or m.r is None:
+        return 0.0
+    return float(np.max(0.5 * m.h * np.abs(r - m.r) / _scale(m.x)))
 
 
 def _travels(track: list) -> bool:
