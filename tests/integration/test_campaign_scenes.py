@@ -10,6 +10,8 @@ import math
 
 import pytest
 
+import viscocontact as vc
+
 from viscocontact.testing.campaign import run_scene
 
 # A limit well past each scene's solve time, so that a scene that runs away fails instead of
@@ -112,6 +114,38 @@ def test_a_stall_within_the_round_off_at_the_rest_state_ends_the_motion():
     so)."""
     outcome = _passes(GLASSY_WAVY_EB_BISECTION)
     assert outcome.outcome == "outside-model"
+
+
+# campaign seed 104 (drawn values): adhesionless, glassy free layer; at the edges' rest the contact
+# carries a tension of 3e-4 of the largest stress, split there its parts merge again, and the
+# motion ended "contact set cycles"
+GLASSY_FREE_LAYER_SPLITS = {
+    "profile": {"kind": "sinusoid", "amplitude": 0.015886679470924137},
+    "rheology": {"kind": "standard-linear-solid", "beta": 8673.777606450556},
+    "kernel": {"kind": "free-layer", "thickness": 2.263549054779695},
+    "load": {"penetration": 0.7588952523120229}, "sliding": {"zeta": 0.2864907880720115},
+    "solver": {"kind": "broyden"}}
+
+
+def test_a_split_that_cycles_in_the_motion_refines_the_contact():
+    """A contact whose tension and split alternate in the edges' motion is refined there, as
+    in the equilibrium solve, and the motion ends on one contact: the equilibrium that 256
+    elements a contact give from the start (without a refinement) to about ten times that
+    solve's error estimate (1.8e-7)."""
+    from viscocontact.methods.bem import BEM
+    from viscocontact.methods.bem.meshing import Discretization
+
+    outcome = _passes(GLASSY_FREE_LAYER_SPLITS)
+    assert outcome.outcome == "converged"
+    scene = vc.Scene.from_dict(GLASSY_FREE_LAYER_SPLITS)
+    refined = vc.solve(scene, method=BEM())
+    assert refined.converged and refined.n_contacts == 1
+    assert any(e.startswith("mesh refined in a contact whose tension and split alternate")
+               for e in refined.extras["events"])
+    fine = vc.solve(scene, method=BEM(), discretization=Discretization(elements=256))
+    assert fine.converged and fine.n_contacts == 1
+    assert refined.area == pytest.approx(fine.area, rel=2e-6)
+    assert refined.friction == pytest.approx(fine.friction, rel=2e-6)
 
 
 SPECTRAL_ESTIMATE = (

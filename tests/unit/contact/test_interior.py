@@ -76,3 +76,16 @@ def test_a_refined_point_doubles_only_the_contact_holding_it(n_contacts, which, 
     counts = run.counts_for(edges)
     assert counts == tuple(2 * base if j == which else base for j in range(n_contacts))
     assert not run.refine_at([0.1], [INTERIOR_CAP])
+
+
+def test_a_coarser_mesh_of_a_solve_keeps_its_refinements_in_proportion():
+    """The coarse meshes of an error estimate refine the contacts the solve refined, by the
+    same factor over their own elements (else a contact refined for a nearly vanishing tension
+    cycles again on the coarse mesh and the estimate is lost)."""
+    fine = _run(Sinusoid(amplitude=0.1), elements=64)
+    edges = np.array([0.0, 0.3, 1.5, 1.8])
+    assert fine.refine_at([0.1], [64]) and fine.refine_at([0.1], [128])
+    assert fine.counts_for(edges) == (256, 64)
+    coarse = _run(Sinusoid(amplitude=0.1), elements=32)
+    coarse.inherit(fine, 0.5)
+    assert coarse.counts_for(edges) == (128, 32)

@@ -251,6 +251,13 @@ class MeshPolicy:
                 grew = True
         return grew
 
+    def inherit(self, other: "MeshPolicy", ratio: float) -> None:
+        """Take ``other``'s refinements with ``ratio`` times their elements (a coarser mesh of
+        the same solve: a refined contact stays refined, by the same factor over this
+        policy's elements)."""
+        self.refined = [(point, max(self.spec.elements, int(round(m * ratio))))
+                        for point, m in other.refined]
+
     def forget(self) -> None:
         """Drop the recorded refinements (a solve that starts afresh)."""
         self.refined.clear()

@@ -125,8 +125,8 @@ class Solve:
                 out = self.approach.run(target)
         else:
             out = self.approach.run(target)
-        found = (estimate(lambda disc: Solve(attrs.evolve(p, discretization=disc), self.prep),
-                          p.discretization, self.prep, self.spec, out, target, p.adhesion)
+        found = (estimate(self.coarser, p.discretization, self.prep, self.spec, out, target,
+                          p.adhesion)
                  if estimate_error and out.outcome is Outcome.CONVERGED else None)
         if found is not None:
             self.log.event(f"error estimate {found.error:.2g} (Ã {found.area:.2g}, μ "
@@ -136,6 +136,13 @@ class Solve:
         if found is not None:
             result.extras.update(error_estimate=found.error, **found.extras())
         return result
+
+    def coarser(self, disc) -> "Solve":
+        """The parts of this problem's solve with the coarser discretisation ``disc``, the
+        contacts this solve refined refined by the same factor (:meth:`MeshPolicy.inherit`)."""
+        solve = Solve(attrs.evolve(self.problem, discretization=disc), self.prep)
+        solve.policy.inherit(self.policy, disc.elements / self.problem.discretization.elements)
+        return solve
 
     def assemble(self, out: State, target: Control, want_fields: bool,
                  elapsed: float) -> ContactResult:

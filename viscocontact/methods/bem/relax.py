@@ -46,7 +46,7 @@ from ...contact.mesh import same_zones, zone_patterns
 from ...contact.topology import TWO_PI, TopologyChange, repair
 from .checks import tensile_split
 from .path import STEP_REDUCTION
-from .restarts import split_strength
+from .restarts import refined_where_alternating, split_strength
 from .sets import MIN_GAP, MIN_WIDTH, Control
 from .state import Outcome, State
 
@@ -212,11 +212,16 @@ class Relaxation:
                 if sum(len(edges) == len(y) and np.allclose(edges, y, rtol=0, atol=1e-3)
                        for y in self._splits) >= 2:
                     # the parts merged again, and the merged contact splits at the same
-                    # place: the motion has no state to end in with this contact set
+                    # place: refined there, the motion goes on from the merged contact (a
+                    # tension below the mesh's error); else it has no state to end in
+                    counts = None if out.system is None else out.system.counts
+                    why = refined_where_alternating(eq, counts, len(out.edges) // 2, where,
+                                                    tension)
+                    if why is None:
+                        self._splits = []
+                        return np.asarray(out.edges, dtype=float)
                     return State(outcome=Outcome.NOT_CONVERGED, edges=out.edges,
-                                 change="cycle", message=f"contact set cycles: a contact split "
-                                         f"{place} (up to {tension:.2g} of the largest "
-                                         "stress) and its parts merged again, three times")
+                                 change="cycle", message=f"{why} (split {place}, three times)")
                 self._splits.append(edges)
                 if not full and len(edges) > len(out.edges):
                     eq.log.event(f"{len(where)} contact(s) split {place} (up to "

@@ -251,7 +251,8 @@ class Restarts:
             return self.alternating(system, x, fields, ctx, size, where, tension)
         if not self.changes:
             return State(outcome=Outcome.NOT_CONVERGED, edges=x, fields=fields, ctx=ctx,
-                         residual=size, message="a contact splits", change="split")
+                         residual=size, message="a contact splits", change="split",
+                         system=system)
         self.splits.append(split)
         if any(len(split) == len(y) and np.allclose(split, y, rtol=0, atol=1e-3)
                for y in self.splits[:-1]):
@@ -267,30 +268,40 @@ class Restarts:
         return split
 
     def alternating(self, system, x, fields, ctx, size, where, tension) -> State | np.ndarray:
-        """Split -> the parts merge -> the same tension, twice. A small tension means the
-        pressure nearly vanishes inside the contact, with a sign below what this mesh
-        resolves: that contact is refined (the edges to restart from), else a cycle."""
-        eq = self.eq
-        counts = element_counts(eq.spec, system.counts, len(x) // 2)
-        if tension > REFINED_TENSION or not self.refine:
-            return _not_converged(
-                x, fields, ctx, size,
-                "contact set cycles: a merged contact carries tension "
-                f"({tension:.2g} of the largest pressure), and the parts it is split "
-                "into merge again")
-        if not eq.policy.refine_at([c for _, c in where], [counts[j] for j, _ in where]):
-            return _not_converged(
-                x, fields, ctx, size,
-                "contact set cycles: a merged contact carries tension, and the parts "
-                f"it is split into merge again, with {eq.policy.cap} elements in the "
-                "contact")
-        eq.log.event(
-            "mesh refined in a contact whose tension and split alternate (up to "
-            f"{max(m for _, m in eq.policy.refined)} elements): its tension, "
-            f"{tension:.2g} of the largest pressure, is a nearly vanishing "
-            "pressure whose sign the mesh does not resolve")
-        self.splits.clear()
-        return x
+        """Split -> the parts merge -> the same tension, twice: the contact is refined where
+        it splits (:func:`refined_where_alternating`; the edges to restart from), else a
+        cycle."""
+        why = ("" if not self.refine else
+               refined_where_alternating(self.eq, system.counts, len(x) // 2, where, tension))
+        if why is None:
+            self.splits.clear()
+            return x
+        return _not_converged(x, fields, ctx, size, why or (
+            "contact set cycles: a merged contact carries tension "
+            f"({tension:.2g} of the largest pressure), and the parts it is split into merge "
+            "again"))
+
+
+def refined_where_alternating(eq, counts, n_contacts: int, where, tension: float) -> str | None:
+    """A contact whose tension and split alternate (its parts merge again): a small tension
+    (at most :data:`REFINED_TENSION` of the largest stress beyond what the interface holds)
+    means the stress nearly vanishes inside it with a sign below what the mesh resolves, so
+    the contacts holding ``where`` (``(index, point)`` of :func:`~.checks.tensile_split`) get
+    twice their elements for the rest of the solve: None. Else why the contact set cycles."""
+    if tension > REFINED_TENSION:
+        return ("contact set cycles: a merged contact carries tension "
+                f"({tension:.2g} of the largest stress), and the parts it is split into "
+                "merge again")
+    counts = element_counts(eq.spec, counts, n_contacts)
+    if not eq.policy.refine_at([c for _, c in where], [counts[j] for j, _ in where]):
+        return ("contact set cycles: a merged contact carries tension, and the parts it is "
+                f"split into merge again, with {eq.policy.cap} elements in the contact")
+    eq.log.event(
+        "mesh refined in a contact whose tension and split alternate (up to "
+        f"{max(m for _, m in eq.policy.refined)} elements): its tension, {tension:.2g} of "
+        "the largest stress, is a nearly vanishing stress whose sign the mesh does not "
+        "resolve")
+    return None
 
 
 def split_strength(eq) -> float:
@@ -307,4 +318,4 @@ def _not_converged(x, fields, ctx, size, message) -> State:
                  residual=size, message=message)
 
 
-__all__ = ["REFINED_TENSION", "Restarts"]
+__all__ = ["REFINED_TENSION", "Restarts", "refined_where_alternating"]

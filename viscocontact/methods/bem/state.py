@@ -23,8 +23,9 @@ class Outcome(enum.Enum):
 class State:
     """An equilibrium step's result: the outcome, the edges it ended at, the fixed-edge field
     solution and edge context there (``None`` without contacts), the largest edge residual, a
-    message, and for a converged state the edge system it was solved with (its derivatives there
-    give the path's tangent)."""
+    message, and for a converged state (or one stopped at a birth or a split) the edge system it
+    was solved with (its derivatives there give the path's tangent; its element counts, the
+    refinement of a split)."""
 
     outcome: Outcome
     edges: np.ndarray
