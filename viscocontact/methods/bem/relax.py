@@ -25,11 +25,15 @@ state lies where the linearised motion holds, and the flow ends at Newton's root
 finishes from there with the contact set held, on the trial budgets of an approach step (at a
 fold, where the root is gone, it fails fast and the motion goes on). Just past a fold the edges
 slow down where the root has vanished (a bottleneck whose residual can fall below the rest
-level); where the equilibrium solve finds no root at rest, the motion goes on through it. Where the profile penetrates
-at its root, contacts are born there, at zero size, and the motion goes on with them (a born
-contact grows as every edge moves); where a contact at rest carries more tension than the
-interface holds (any, without adhesion; the cohesive stress σ̃0 under a cohesive law), it
-splits there and the motion goes on with its parts. So merges, detachments, births and splits
+level); where the equilibrium solve finds no root at rest, the motion goes on through it.
+Where the profile penetrates at its root, contacts are born there, at zero size, and the
+motion goes on with them (a born contact grows as every edge moves); where a contact at rest
+carries more tension than the interface holds (any, without adhesion; the cohesive stress σ̃0
+under a cohesive law), it splits there and the motion goes on with its parts. Where the parts merge again and split at
+the same place a third time, the tension is a nearly vanishing stress whose sign the mesh does
+not resolve: the contact is refined there, as the equilibrium solve refines it
+(:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which has no
+shorter step to get past it), and the motion goes on. So merges, detachments, births and splits
 all happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
@@ -188,8 +192,10 @@ class Relaxation:
         the profile penetrates at that state's root, the edges with the contacts born there
         added, or where a contact's tension exceeds what the interface holds, the edges with it
         split there (the new edges move by the motion, like every edge; a split whose parts
-        merged again twice is a cycle, a failed state); or None when the solve met a merge (the
-        motion makes those). ``trial``: with the :attr:`trial` budgets."""
+        merged again twice refines the contact, and the merged edges go on, or, where the
+        tension is too large or the contact at its cap, is a cycle, a failed state); or None
+        when the solve met a merge (the motion makes those). ``trial``: with the
+        :attr:`trial` budgets."""
         eq = self.eq
         out = eq.solve(x, control, use_fallback=False, changes=False, **self._finish,
                        **(self.trial if trial else {}))
