@@ -148,6 +148,27 @@ def test_a_split_that_cycles_in_the_motion_refines_the_contact():
     assert refined.friction == pytest.approx(fine.friction, rel=2e-6)
 
 
+# campaign seed 281 (drawn values): the contact at the target travels down the asperity and
+# vanishes; the motion reported that as "no contact" at Δ̃ = 0.19, where the profile penetrates
+# the solid (the campaign took it for an answer)
+TRAVELLING_CONTACT = {
+    "profile": {"kind": "sinusoid", "amplitude": 0.03227198428447506},
+    "rheology": {"kind": "standard-linear-solid", "beta": 353.1039640202087},
+    "kernel": {"kind": "confined-layer", "thickness": 0.4830313352282042},
+    "adhesion": {"kind": "energy-balance", "gamma": 7.545006992194638e-06},
+    "load": {"penetration": 0.19080593611224267}, "sliding": {"zeta": 0.023300424920644085},
+    "solver": {"kind": "newton"}}
+
+
+def test_a_contact_that_vanishes_where_the_profile_penetrates_is_born_again():
+    """Where every contact detaches at a positive penetration, contacts are born where the
+    profile penetrates and the motion goes on; born again where they were, the motion is
+    periodic and the solve says there is no steady state (not "no contact")."""
+    outcome = _passes(TRAVELLING_CONTACT)
+    assert outcome.outcome == "scene"
+    assert "born again where they were: no steady state" in outcome.message
+
+
 SPECTRAL_ESTIMATE = (
     "the spectral method converges in 0.3 s (16384 cells), but its power-balance misfit (2.2e-3 "
     "of μ) is 1.1 times the two sides' estimates (8.4e-4 for μ, 1.2e-3 for the dissipation); "

@@ -284,6 +284,10 @@ def check(scene, result) -> tuple[list[str], str, dict]:
     if result.status.value == "no_contact":
         if load.controlled == "mean_pressure" and load.value > 0:
             failures.append(f"no contact under a compressive load p̃∞ = {load.value}")
+        if load.controlled == "penetration" and load.value > 0:
+            # the profile first touches at Δ̃ = 0: past it, it penetrates the undeformed solid
+            failures.append(f"no contact at the penetration Δ̃ = {load.value}, where the "
+                            "profile penetrates the undeformed solid")
         return failures, "", values
     if not abs(reached - load.value) <= LOAD_TOLERANCE * max(1.0, abs(load.value)):
         failures.append(f"load not met: {load.controlled} {reached!r} for {load.value!r}")

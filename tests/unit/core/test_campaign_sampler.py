@@ -114,6 +114,24 @@ def test_each_violated_identity_is_named(changes, words):
     assert len(failures) == 1 and words in failures[0]
 
 
+@pytest.mark.parametrize("load, flagged", [
+    ({"penetration": 0.2}, True), ({"penetration": -0.1}, False),
+    ({"mean_pressure": 0.3}, True), ({"mean_pressure": -0.1}, False)])
+def test_no_contact_is_flagged_where_a_contact_must_be(load, flagged):
+    """No contact is no answer under a compressive load, nor at a positive penetration (past
+    the first touch at Δ̃ = 0 the profile penetrates the undeformed solid); a tensile load or a
+    negative penetration may leave none."""
+    none = _result(area=0.0, n_contacts=0, edges=np.zeros((0, 2)), friction=0.0,
+                   mean_pressure=0.0, penetration=load.get("penetration", 0.0),
+                   status=SolveStatus.NO_CONTACT, message="no contact at this load")
+    scene = Scene.from_dict({**WAVY, "load": load,
+                             "adhesion": {"kind": "energy-balance", "gamma": 1e-3}})
+    failures = check(scene, none)[0]
+    assert bool(failures) == flagged
+    if flagged:
+        assert "no contact" in failures[0]
+
+
 def test_friction_under_a_tensile_load_is_negative():
     """μ = F_t/p̃∞: a force that opposes sliding under a tensile load (p̃∞ < 0) gives μ < 0."""
     r = _result(mean_pressure=-0.3, friction=-0.05, extras={"friction_dissipation": -0.05})

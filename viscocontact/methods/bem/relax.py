@@ -59,9 +59,11 @@ from .state import Outcome, State
 SETTLED = 1e3
 #: The largest step times the fastest growth rate of an unstable mode of the motion.
 UNSTABLE_STEP = 0.5
-#: The motion's mesh zones are remade for its edges at most this many times in one motion: in
-#: its first steps, which move the edges the most (the step's end is then evaluated on the new
-#: zones alone), and when it nears its end (the equilibrium solve would remake them).
+#: The motion's mesh zones are remade for its edges in its first this many steps, which move the
+#: edges the most (the step's end is then evaluated on the new zones alone), and at most this
+#: many times when it nears its end (the equilibrium solve there remakes them: the motion must
+#: come to rest on the zones of its rest state, whose residual can differ from the one on the
+#: zones it moved with by far more than the solver's tolerance).
 REZONED = 4
 #: Newton's step from a state of the motion is tested for the root the motion heads for when
 #: it moves no edge more than this many half-widths of its contact.
@@ -162,13 +164,14 @@ class Relaxation:
         self.trial = dict(trial or {})
         self._finish: dict = {}
         self._splits: list = []      # the contact sets made by splits in the current motion
+        self._reborn: list = []      # contacts born in it after every contact detached
 
     def run(self, edges, control: Control, final: bool = True) -> State:
         """The state the edges' motion from ``edges`` ends in (not converged, with the reason,
         when the motion does not end). ``final = False``: an intermediate state of a path,
         solved to :data:`~.path.STEP_REDUCTION` of its start's residual and not polished."""
         systems = _Systems()
-        self._splits = []
+        self._splits, self._reborn = [], []
         self._finish = ({} if final else
                         {"polish": False, "refine": False, "reduction": STEP_REDUCTION})
         x = np.asarray(edges, dtype=float).copy()
@@ -322,9 +325,11 @@ class Relaxation:
         self.eq.log.event(f"the edges moved in {m.moved} steps of their overdamped motion")
         return out
 
-    def _advance(self, m: "_Motion", control: Control, systems: "_Systems") -> State | None:
+    def _advance(self, m: "_Motion", control: Control,
+                 systems: "_Systems") -> State | np.ndarray | None:
         """One step of the motion, accepted or rejected by its local error; a state when the
-        step ends the motion (closure, every contact detached, a contact that travels)."""
+        step ends the motion (closure, every contact detached, a contact that travels), or
+        the contacts born where every contact detached and the profile penetrates."""
         if m.r is None or m.J is None:
             return self._failed(m.x, "met a contact set without a valid field")
         if m.h is None:         # the first step moves the fastest edge a twentieth of a scale
@@ -341,7 +346,7 @@ class Relaxation:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
         fresh = None
-        if not changed and m.early and m.rezoned < REZONED:
+        if not changed and m.early and m.moved < REZONED:
             # the edges moved out of the mesh zones they were solved with: the step's end is
             # evaluated on new ones (a remade mesh changes the residual by its discretisation
             # error, which the step's error measure then holds too)
@@ -376,16 +381,17 @@ class Relaxation:
             m.system, m.J = after, None
             systems.append(after)
         elif fresh is not None:
-            m.system, m.rezoned = fresh, m.rezoned + 1
+            m.system = fresh
             systems.append(fresh)
         if _travels(m.track):
             return self._failed(m.x, "carries the contacts round the period: no steady "
                                      "state at this control")
         return None
 
-    def _ended(self, landed: np.ndarray, full: bool, control: Control) -> State:
+    def _ended(self, landed: np.ndarray, full: bool, control: Control) -> State | np.ndarray:
         """A step that closed the contact over the period (``full``) or detached every
-        contact."""
+        contact: the state, or, where the profile still penetrates the undeformed solid at
+        this penetration, the contacts born there (the motion goes on with them)."""
         if full:
             if control.is_load and not self.closed.supports(control.value):
                 return self._failed(landed, "closed the contact, which does not carry "
@@ -396,6 +402,21 @@ class Relaxation:
         if control.is_load and control.value > 0:
             # a compressive load needs a contact: found afresh from the first touch
             return self.eq.solve(landed, control, use_fallback=False, **self._finish)
+        born = None if control.is_load else self.eq.checks.births_without_contact(control)
+        if born is not None:
+            # no contact is no state where the profile penetrates the solid: contacts are born
+            # where it does, as at the end of any motion; born where they were born before in
+            # this motion, they travel and vanish again: the motion is periodic
+            if any(len(b) == len(born) and np.allclose(b, born, rtol=0, atol=1e-12)
+                   for b in self._reborn):
+                return self._failed(landed, "detaches its contacts, which are born again "
+                                            "where they were: no steady state at this control")
+            self._reborn.append(born)
+            self.eq.log.event(f"{len(born) // 2} contact(s) born where the profile penetrates "
+                              "the undeformed solid")
+            self.eq.log.records.append({"kind": "birth", "control": control.value,
+                                        "contacts": float(len(born) // 2)})
+            return born
         return State.no_contact()
 
     def _fresh(self, system, x: np.ndarray, control: Control):
