@@ -162,11 +162,11 @@ TRAVELLING_CONTACT = {
 
 def test_a_contact_that_vanishes_where_the_profile_penetrates_is_born_again():
     """Where every contact detaches at a positive penetration, contacts are born where the
-    profile penetrates and the motion goes on; born again where they were, the motion is
-    periodic and the solve says there is no steady state (not "no contact")."""
+    profile penetrates; where none holds up to the target (they travel off and vanish, and are
+    born again), the solve says there is no steady state, not "no contact"."""
     outcome = _passes(TRAVELLING_CONTACT)
     assert outcome.outcome == "scene"
-    assert "born again where they were: no steady state" in outcome.message
+    assert "born again (no steady state at this control)" in outcome.message
 
 
 SPECTRAL_ESTIMATE = (

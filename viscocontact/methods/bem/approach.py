@@ -112,7 +112,9 @@ class Approach:
             return self.pressed(edges, d0, target)
         touch = Control.penetration_of(d0)
         edges = self.with_field(edges, touch)
-        state = self.relax.run(edges, touch, final=False)
+        # (a first contact that travels off the asperity and vanishes: none holds at first
+        # touch, and the profile is pressed on)
+        state = self.relax.run(edges, touch, final=False, births=False)
         if state.outcome is Outcome.NOT_CONVERGED and "no steady state" in state.message:
             # the first contact travels along the profile (a toughened trailing edge drags it):
             # it never settles before it is loaded, so it is loaded at once, to the target
@@ -166,7 +168,7 @@ class Approach:
             overlap = eq.checks.births_without_contact(control)
             if overlap is None:
                 return State.no_contact()
-            return self.relax.run(overlap, control, final=False)
+            return self.relax.run(overlap, control, final=False, births=False)
 
         end = target.value if not target.is_load else 1.0
         lo, hi, landing = d0, None, None
@@ -179,8 +181,15 @@ class Approach:
                 break
             lo = depth
         if hi is None or landing is None:
-            return State.no_contact() if not target.is_load else self.at_once(
-                eq.checks.births_without_contact(Control.penetration_of(end)), target)
+            if target.is_load:
+                return self.at_once(eq.checks.births_without_contact(
+                    Control.penetration_of(end)), target)
+            # the profile penetrates the solid at the target, yet no contact holds there: the
+            # contacts born there travel and vanish
+            return State(outcome=Outcome.NOT_CONVERGED, edges=np.zeros(0), change="reborn",
+                         message="no contact holds up to the target penetration: the contacts "
+                                 "born where the profile penetrates travel off and vanish, "
+                                 "and are born again (no steady state at this control)")
         while hi - lo > opt.smallest:
             middle = 0.5 * (lo + hi)
             out = motion(middle)

@@ -164,14 +164,18 @@ class Relaxation:
         self.trial = dict(trial or {})
         self._finish: dict = {}
         self._splits: list = []      # the contact sets made by splits in the current motion
-        self._reborn: list = []      # contacts born in it after every contact detached
+        # contacts born in it after every contact detached (None: no births there)
+        self._reborn: list | None = []
 
-    def run(self, edges, control: Control, final: bool = True) -> State:
+    def run(self, edges, control: Control, final: bool = True, births: bool = True) -> State:
         """The state the edges' motion from ``edges`` ends in (not converged, with the reason,
         when the motion does not end). ``final = False``: an intermediate state of a path,
-        solved to :data:`~.path.STEP_REDUCTION` of its start's residual and not polished."""
+        solved to :data:`~.path.STEP_REDUCTION` of its start's residual and not polished.
+        ``births = False``: where every contact detaches, the motion ends with no contact even
+        where the profile penetrates (the approach's search for the first contact that holds,
+        for which that is the answer "none holds here")."""
         systems = _Systems()
-        self._splits, self._reborn = [], []
+        self._splits, self._reborn = [], [] if births else None
         self._finish = ({} if final else
                         {"polish": False, "refine": False, "reduction": STEP_REDUCTION})
         x = np.asarray(edges, dtype=float).copy()
@@ -287,7 +291,7 @@ class Relaxation:
     def _rezone(self, m: "_Motion", control: Control, systems: "_Systems") -> bool:
         """Whether the edges, at rest, have moved out of the mesh zones they were solved with
         (which the equilibrium solve would remake): then the motion goes on, on new ones."""
-        fresh = self._fresh(m.system, m.x, control)
+        fresh = _fresh(self.eq, m.system, m.x, control)
         if fresh is None:
             return False
         m.system, m.J, m.rezoned = fresh, None, m.rezoned + 1
@@ -350,7 +354,7 @@ class Relaxation:
             # the edges moved out of the mesh zones they were solved with: the step's end is
             # evaluated on new ones (a remade mesh changes the residual by its discretisation
             # error, which the step's error measure then holds too)
-            fresh = self._fresh(m.system, landed, control)
+            fresh = _fresh(self.eq, m.system, landed, control)
             after = fresh if fresh is not None else after
         r = _valid(after.residual, landed)
         # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
@@ -402,16 +406,20 @@ class Relaxation:
         if control.is_load and control.value > 0:
             # a compressive load needs a contact: found afresh from the first touch
             return self.eq.solve(landed, control, use_fallback=False, **self._finish)
-        born = None if control.is_load else self.eq.checks.births_without_contact(control)
-        if born is not None:
+        reborn = self._reborn
+        born = (None if control.is_load or reborn is None
+                else self.eq.checks.births_without_contact(control))
+        if born is not None and reborn is not None:
             # no contact is no state where the profile penetrates the solid: contacts are born
             # where it does, as at the end of any motion; born where they were born before in
             # this motion, they travel and vanish again: the motion is periodic
             if any(len(b) == len(born) and np.allclose(b, born, rtol=0, atol=1e-12)
-                   for b in self._reborn):
-                return self._failed(landed, "detaches its contacts, which are born again "
-                                            "where they were: no steady state at this control")
-            self._reborn.append(born)
+                   for b in reborn):
+                return attrs.evolve(
+                    self._failed(landed, "detaches its contacts, which are born again where "
+                                         "they were: no steady state at this control"),
+                    change="reborn")
+            reborn.append(born)
             self.eq.log.event(f"{len(born) // 2} contact(s) born where the profile penetrates "
                               "the undeformed solid")
             self.eq.log.records.append({"kind": "birth", "control": control.value,
@@ -419,15 +427,15 @@ class Relaxation:
             return born
         return State.no_contact()
 
-    def _fresh(self, system, x: np.ndarray, control: Control):
-        """A new edge system for ``x`` when the mesh zones or element counts of ``system``
-        are not those ``x`` is given (the edges moved out of them), else None."""
-        eq = self.eq
-        counts = eq.policy.counts_for(x)
-        if (counts is None or system.counts is None or tuple(counts) == tuple(system.counts)) \
-                and same_zones(system.zones, zone_patterns(x, eq.spec, system.counts)):
-            return None
-        return eq.system(control, x)
+
+def _fresh(eq, system, x: np.ndarray, control: Control):
+    """A new edge system for ``x`` when the mesh zones or element counts of ``system``
+    are not those ``x`` is given (the edges moved out of them), else None."""
+    counts = eq.policy.counts_for(x)
+    if (counts is None or system.counts is None or tuple(counts) == tuple(system.counts)) \
+            and same_zones(system.zones, zone_patterns(x, eq.spec, system.counts)):
+        return None
+    return eq.system(control, x)
 
 
 def _newton_start(system, r, J, x) -> np.ndarray | None:

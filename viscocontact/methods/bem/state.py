@@ -35,7 +35,9 @@ class State:
     message: str = ""
     system: Any = None
     #: a contact-set change the solve stopped at instead of making it (``Equilibrium.solve``
-    #: with ``changes=False``): "birth", "merge", "detachment" or "split"; "" otherwise
+    #: with ``changes=False``): "birth", "merge", "detachment" or "split"; from the edges'
+    #: motion (not converged) "cycle" (a split whose parts merge again) or "reborn" (contacts
+    #: that detach at a positive penetration are born again where they were); "" otherwise
     change: str = ""
     #: with ``change == "birth"``: the smallest gap outside the contacts (negative: the
     #: profile penetrates there)
