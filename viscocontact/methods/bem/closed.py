@@ -102,7 +102,7 @@ class ClosedContact:
                 why = None
                 if not closure.at_closing_penetration(pen, rh[0].real):
                     why = (f"full contact on an incompressible solid fixes the penetration at "
-                           f"{closing:.6g}; a larger one cannot be imposed")
+                           f"{closing:.6g}; another one cannot be imposed")
                 elif self.adhesive:
                     why = (f"full contact on an incompressible solid holds at the penetration "
                            f"{closing:.6g} under any load it carries, so the penetration does "

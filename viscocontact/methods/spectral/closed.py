@@ -85,7 +85,7 @@ class ClosedContact:
                     reduced_friction=np.nan, n_contacts=1, edges=np.zeros((0, 2)),
                     full_contact=True, converged=False, status=SolveStatus.FAILED,
                     message="full contact on an incompressible solid fixes the penetration at "
-                            f"{1.0 - self.mean_height:.6g}; a larger one cannot be imposed",
+                            f"{1.0 - self.mean_height:.6g}; another one cannot be imposed",
                     residual=np.inf, min_gap=0.0, **common)
             if c0 == 0.0:
                 # at its one penetration the closed contact carries any load from the closing
