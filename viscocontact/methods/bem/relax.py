@@ -29,12 +29,14 @@ level); where the equilibrium solve finds no root at rest, the motion goes on th
 Where the profile penetrates at its root, contacts are born there, at zero size, and the
 motion goes on with them (a born contact grows as every edge moves); where a contact at rest
 carries more tension than the interface holds (any, without adhesion; the cohesive stress σ̃0
-under a cohesive law), it splits there and the motion goes on with its parts. Where the parts merge again and split at
-the same place a third time, the tension is a nearly vanishing stress whose sign the mesh does
-not resolve: the contact is refined there, as the equilibrium solve refines it
-(:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which has no
-shorter step to get past it), and the motion goes on. So merges, detachments, births and splits
-all happen on the way, as the motion makes them.
+under a cohesive law), it splits there and the motion goes on with its parts. Where the parts
+merge again and split at the same place a third time, the tension is a nearly vanishing stress
+whose sign the mesh does not resolve: the contact is refined there, as the equilibrium solve
+refines it (:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which
+has no shorter step to get past it), and the motion goes on. Where every contact detaches while
+the profile penetrates the undeformed solid, contacts are born there and the motion goes on;
+born again where they were, the motion is periodic (no steady state). So merges, detachments,
+births and splits all happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
