@@ -16,7 +16,7 @@ positive residual recedes. The flow is integrated by linearly implicit Euler ste
 residual a step), is within ``tolerance`` of its contact's half-width (or of the mean
 half-width, when that is larger; a step after a rejected one does not grow); contacts that
 meet merge, contacts that vanish detach, contacts that close over the period close (the mesh
-zones follow the edges: a step that moves them out of their zones ends on new ones). As the
+zones are remade in the first steps and at rest). As the
 edges slow down the steps grow and become Newton's; once every mode of the motion decays and
 Newton's iteration from the state contracts (its second step at most
 :data:`NEWTON_CONTRACTION` of its first, which is within :data:`NEWTON_REACH` half-widths: the
@@ -62,7 +62,7 @@ SETTLED = 1e3
 #: The largest step times the fastest growth rate of an unstable mode of the motion.
 UNSTABLE_STEP = 0.5
 #: The motion's mesh zones are remade for its edges in its first this many steps, which move the
-#: edges the most (the step's end is then evaluated on the new zones alone), and at most this
+#: edges the most (a residual on the new zones at the step's end), and at most this
 #: many times when it nears its end (the equilibrium solve there remakes them: the motion must
 #: come to rest on the zones of its rest state, whose residual can differ from the one on the
 #: zones it moved with by far more than the solver's tolerance).
@@ -259,7 +259,10 @@ class Relaxation:
                 return self._failed(m.x, "met a contact set without a valid field")
             size = float(np.max(np.abs(m.r)))
             near = size <= min(SETTLED * self._resolved(m), m.ghost)
-            if near and m.rezoned < REZONED and self._rezone(m, control, systems):
+            # the first steps' zones are remade (they move the edges the most), and those
+            # of the rest state, on a budget of their own
+            if ((near and m.rezoned < REZONED) or (m.early and m.moved < REZONED)) \
+                    and self._rezone(m, control, systems, count=near):
                 continue
             if near:
                 rest = self._at_rest(m, control)
@@ -290,13 +293,14 @@ class Relaxation:
         at a residual of noise."""
         return self.eq.noise_floor(m.system, m.x, self.eq.tolerances).residual
 
-    def _rezone(self, m: "_Motion", control: Control, systems: "_Systems") -> bool:
+    def _rezone(self, m: "_Motion", control: Control, systems: "_Systems",
+                count: bool = True) -> bool:
         """Whether the edges, at rest, have moved out of the mesh zones they were solved with
         (which the equilibrium solve would remake): then the motion goes on, on new ones."""
         fresh = _fresh(self.eq, m.system, m.x, control)
         if fresh is None:
             return False
-        m.system, m.J, m.rezoned = fresh, None, m.rezoned + 1
+        m.system, m.J, m.rezoned = fresh, None, m.rezoned + int(count)
         systems.append(fresh)
         m.r = _valid(fresh.residual, m.x)
         return True
@@ -351,13 +355,6 @@ class Relaxation:
         if full or not landed.size:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
-        fresh = None
-        if not changed and m.early and m.moved < REZONED:
-            # the edges moved out of the mesh zones they were solved with: the step's end is
-            # evaluated on new ones (a remade mesh changes the residual by its discretisation
-            # error, which the step's error measure then holds too)
-            fresh = _fresh(self.eq, m.system, landed, control)
-            after = fresh if fresh is not None else after
         r = _valid(after.residual, landed)
         # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
         # the speed -O r over the step (one residual a step: the one the next step needs);
@@ -386,9 +383,6 @@ class Relaxation:
             m.track = m.track[-1:]
             m.system, m.J = after, None
             systems.append(after)
-        elif fresh is not None:
-            m.system = fresh
-            systems.append(fresh)
         if _travels(m.track):
             return self._failed(m.x, "carries the contacts round the period: no steady "
                                      "state at this control")
