@@ -22,7 +22,7 @@ from .adhesion.base import AdhesionModel
 from .adhesion.none import NoAdhesion
 from .contact.fields import NormalizedProfile
 from .kernels.half_plane import HalfPlane
-from .methods.base import SolutionMethod
+from .methods.base import Prepared, SolutionMethod
 from .methods.bem.meshing import INTERIOR_CAP, SMALLEST_RESOLVED, Discretization, mesh_spec
 from .methods.bem.system import residual_scale
 from .result import ContactResult
@@ -64,15 +64,6 @@ def _name_hint(kind: str, name: str) -> str:
                 f"{REGISTRIES[kind].names()})")
     return (f" (the name {name!r} is for scene files: pass the object, "
             f"{cls.__module__}.{cls.__qualname__}(...))")
-
-
-@attrs.frozen(kw_only=True, eq=False)
-class Prepared:
-    """What a problem precomputes once: kernel tables, normalised profile, m2."""
-
-    kernel: Any                 # the kernel's prepared tables (duck-typed)
-    shape: NormalizedProfile
-    m2: float
 
 
 @attrs.frozen(kw_only=True)

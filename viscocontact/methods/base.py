@@ -17,13 +17,26 @@ Contract for implementers
    estimated relative discretisation error of the area and friction, NaN when the method has
    no estimate). ``initial`` is a previous result or an array of contact edges to start from
    (a warm start along a sweep; a method may ignore it), ``prepared`` the problem's
-   :class:`~viscocontact.problem.Prepared` tables when the caller has them.
+   :class:`Prepared` tables when the caller has them.
 4. :meth:`plan_steps` describes what a solve will compute (``solve --explain``).
 """
 from __future__ import annotations
 
 import abc
-from typing import ClassVar
+from typing import Any, ClassVar
+
+import attrs
+
+
+@attrs.frozen(kw_only=True, eq=False)
+class Prepared:
+    """What a problem precomputes once for its method: the kernel's tables, the normalised
+    profile (a :class:`~viscocontact.contact.fields.NormalizedProfile`) and its m2
+    (:meth:`ContactProblem.prepare <viscocontact.problem.ContactProblem.prepare>`)."""
+
+    kernel: Any                 # the kernel's prepared tables (duck-typed)
+    shape: Any
+    m2: float
 
 
 class SolutionMethod(abc.ABC):

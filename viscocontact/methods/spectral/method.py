@@ -23,8 +23,7 @@ from ..._events import EventList
 from ..._validation import in_range, int_range
 from ...errors import ValidationError
 from ...kernels.clausen import TWO_PI
-from ...problem import Prepared
-from ..base import SolutionMethod
+from ..base import Prepared, SolutionMethod
 from .approach import ApproachSettings
 from .assembly import contact_result
 from .closed import ClosedContact, no_contact_result
