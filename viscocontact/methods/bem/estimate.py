@@ -9,7 +9,9 @@ the edge element). Richardson's rule turns each change of Ã and μ into an erro
 ``|Ã_coarse - Ã| / (2^p - 1)`` at the order of its kind, and the estimate is their sum,
 relative to Ã (``μ`` relative to ``max(|μ|, FRICTION_FLOOR·√m2)``, as the spectral method's).
 The dissipated power's friction (the power balance's side: the bulk dissipation and the flux
-into the edges) gets its estimate the same way, reported beside them.
+into the edges) gets its estimate the same way, reported beside them. Without a flux into the
+edges the two frictions discretise one quantity, and their estimates are raised to add up to
+their misfit at least (:func:`~viscocontact.methods.power.bounded_by_power`).
 """
 from __future__ import annotations
 
@@ -20,6 +22,7 @@ import attrs
 import numpy as np
 
 from ...contact.fields import dissipated_friction, edge_flux_friction, friction
+from ..power import bounded_by_power
 from .state import Outcome, State
 
 #: Order assumed for the change under half the elements: the clustered mesh converges at second
@@ -108,13 +111,20 @@ def measures(prep, state: State, adhesion) -> tuple[float, float, float]:
     fields = state.fields
     mesh = fields.mesh
     pm = fields.mean_pressure
-    amplitude = prep.shape.amplitude
-    dissipated = dissipated_friction(prep.kernel, mesh, fields.sigma, amplitude, pm, fields.loads)
-    if state.ctx is not None:
-        dissipated += edge_flux_friction(adhesion.edge_terms(state.ctx).stress_intensity,
-                                         state.ctx.edge_compliance, amplitude, pm)
+    dissipated = dissipated_friction(prep.kernel, mesh, fields.sigma, prep.shape.amplitude, pm,
+                                     fields.loads) + edge_flux(prep, state, adhesion)
     return (float(np.sum(mesh.width)),
             friction(mesh, fields.sigma, prep.shape, pm, fields.loads), float(dissipated))
+
+
+def edge_flux(prep, state: State, adhesion) -> float:
+    """The flux into the edges' tips of a converged state, in friction units (round-off where
+    its edges carry no stress singularity: no adhesion, or a cohesive zone)."""
+    if state.ctx is None:
+        return 0.0
+    return float(edge_flux_friction(adhesion.edge_terms(state.ctx).stress_intensity,
+                                    state.ctx.edge_compliance, prep.shape.amplitude,
+                                    state.fields.mean_pressure))
 
 
 def friction_scale(friction: float, m2: float) -> float:
@@ -183,6 +193,11 @@ def estimate(parts, disc, prep, spec, state: State, target, adhesion) -> Estimat
     for run, order in runs:
         errors += np.asarray(relative_changes(fine, (run.area, run.friction, run.dissipation),
                                               prep.m2)) / (2.0**order - 1.0)
+    if adhesion.work_of_adhesion == 0.0 or adhesion.cohesive_law(prep.shape.amplitude):
+        # no flux into the edges (whose finite-δX balance is a model of its own, not a
+        # discretisation of the bulk's power): the two frictions are bounded by their misfit
+        misfit = abs(fine[1] - fine[2]) / friction_scale(fine[1], prep.m2)
+        errors[1], errors[2] = bounded_by_power(float(errors[1]), float(errors[2]), misfit)
     return Estimate(area=float(errors[0]), friction=float(errors[1]),
                     dissipation=float(errors[2]), scale=friction_scale(fine[1], prep.m2),
                     coarse=tuple(run for run, _ in runs))

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from .cohesive import GridLaw
-from .estimate import changes, estimate, friction_scale
+from .estimate import changes, estimate, friction_scale, power_bounded
 from .grid import UniformGrid, cells_inside, refine
 from .history import cohesive_grid_solve, record_approach
 from .measures import GridMeasures, measure
@@ -162,7 +162,8 @@ class Ladder:
                 break
             if previous is not None:
                 change = changes(previous, current, self.prep.m2, method.friction_floor)
-                errors = estimate(change, last)
+                errors = power_bounded(estimate(change, last), current, self.prep.m2,
+                                       method.friction_floor)
                 last = change
             if previous is not None and grid.points >= target:
                 # the tolerance is that of the results Ã and μ (the dissipation's estimate is
