@@ -164,6 +164,23 @@ def test_a_closed_interface_holds_while_its_tension_is_within_its_strength(stren
     assert closed.holds(Control.load_of(load)) is holds
 
 
+@pytest.mark.parametrize("kernel, penetration, possible", [
+    ("half-plane", 0.6, False),      # the mean gap 1 - r̂0 - Δ̃ = 0.4 stays open somewhere
+    ("half-plane", 1.0, True),       # the closing penetration (a sinusoid's r̂0 = 0)
+    ("free-layer", 0.6, True)])      # a compressible layer (ν = 0.3) closes at any penetration
+def test_full_contact_is_possible_on_an_incompressible_solid_only_at_its_closing_penetration(
+        kernel, penetration, possible):
+    from viscocontact.kernels import FreeLayer, HalfPlane
+    from viscocontact.methods.bem.closed import ClosedContact
+    from viscocontact.rheology import Elastic
+
+    solid = HalfPlane() if kernel == "half-plane" else FreeLayer(thickness=1.0, poisson=0.3)
+    prob = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=Elastic(), kernel=solid,
+                          adhesion=EnergyBalance(gamma=1e-4), penetration=penetration)
+    closed = ClosedContact(prob.prepare(), 1024, 0.0, adhesive=True, strength=np.inf)
+    assert closed.possible(Control.penetration_of(penetration)) == possible
+
+
 @pytest.mark.parametrize("r, reduction, expected", [
     ([0.02, -0.5], 1e-4, 5e-5),          # a tenth-thousandth of the start's max|r|
     ([2e-5, 1e-5], 1e-4, 1e-8),          # never below the tolerance

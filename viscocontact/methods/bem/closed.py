@@ -77,6 +77,15 @@ class ClosedContact:
         return closure.closes(self.closing_load, rh[0].real, self.prep.kernel.mean,
                               **control.fields_kwargs())
 
+    def possible(self, control: Control) -> bool:
+        """Whether full contact can be the state under ``control`` at all: on an incompressible
+        solid (``c0 = 0``) in penetration control only at its closing penetration (below it
+        the mean gap, which the penetration fixes there, is positive: a gap of that volume
+        stays open somewhere), and elsewhere where it carries the load (:meth:`holds`)."""
+        if not control.is_load and self.prep.kernel.mean == 0.0:
+            return bool(closure.at_closing_penetration(control.value, self.stress[1][0].real))
+        return bool(self.holds(control))
+
     def holds(self, control: Control) -> bool:
         """Whether a closed contact stays closed under ``control`` (while its tension stays
         within the interface's strength: none without adhesion)."""

@@ -15,10 +15,12 @@ positive residual recedes. The flow is integrated by linearly implicit Euler ste
 ``h²/2·Ẍ`` estimated as ``h/2`` times the change of the edges' speed over the step (one
 residual a step), is within ``tolerance`` of its contact's half-width (or of the mean
 half-width, when that is larger; a step after a rejected one does not grow); contacts that
-meet merge, contacts that vanish detach, contacts that close over the period close (the mesh
-zones are remade in the first steps and at rest). As the
-edges slow down the steps grow and become Newton's; once every mode of the motion decays and
-Newton's iteration from the state contracts (its second step at most
+meet merge, contacts that vanish detach, contacts that close over the period close where full
+contact can be the state (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that
+closed it is shortened: on an incompressible solid below its closing penetration a gap of the
+volume the penetration fixes stays open), and the mesh zones are remade in the first steps
+and at rest. As the edges slow down the steps grow and become Newton's; once every mode of the
+motion decays and Newton's iteration from the state contracts (its second step at most
 :data:`NEWTON_CONTRACTION` of its first, which is within :data:`NEWTON_REACH` half-widths: the
 state lies where the linearised motion holds, and the flow ends at Newton's root), or
 ``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance, the equilibrium solve
@@ -352,6 +354,12 @@ class Relaxation:
             m.h, m.J = 0.25 * m.h, None
             return None
         landed, changed, reason, full = repair(m.x + move, MIN_WIDTH, MIN_GAP)
+        if full and not self.closed.possible(control):
+            # full contact is no state here (the load it cannot carry, or the gap volume that a
+            # penetration fixes on an incompressible solid): the step overshot a gap that the
+            # motion narrows towards its equilibrium width
+            m.h, m.J, m.rejected = 0.25 * m.h, None, True
+            return None
         if full or not landed.size:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
@@ -393,9 +401,6 @@ class Relaxation:
         contact: the state, or, where the profile still penetrates the undeformed solid at
         this penetration, the contacts born there (the motion goes on with them)."""
         if full:
-            if control.is_load and not self.closed.supports(control.value):
-                return self._failed(landed, "closed the contact, which does not carry "
-                                            "this load")
             self.eq.log.event("the edges' motion closed the contact")
             return State.full_contact()
         self.eq.log.event("the edges' motion detached every contact")
