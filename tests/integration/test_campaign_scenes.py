@@ -195,6 +195,25 @@ def test_the_motion_does_not_close_a_gap_that_the_penetration_keeps_open():
     assert outcome.passed, (outcome.outcome, outcome.message)
 
 
+# campaign seed 189 (drawn values): past a fold the one contact grows towards closure, and its
+# steps land where the Maugis-Dugdale zones' equations have no field on the zones the motion
+# moved with; quartered again and again, the steps fell to 1e-15 and the motion ran for 2000
+# steps. Evaluated on zones made for the step's end, it closes the contact (as at 697cd18)
+GROWING_WAVY_MD_LAYER = {
+    "profile": {"kind": "sinusoid", "amplitude": 0.031313841035190956},
+    "rheology": {"kind": "standard-linear-solid", "beta": 3992.608036140502},
+    "kernel": {"kind": "confined-layer", "thickness": 4.382917419291747},
+    "adhesion": {"kind": "maugis-dugdale", "gamma": 3.332913084411843e-06,
+                 "range": 0.0007855791308794556},
+    "load": {"mean_pressure": 0.7008081220180079}, "sliding": {"zeta": 0.812037202727584},
+    "solver": {"kind": "bisection"}}
+
+
+def test_a_motion_step_without_a_field_on_its_zones_is_evaluated_on_new_ones():
+    outcome = run_scene(GROWING_WAVY_MD_LAYER, time_limit=LIMIT)
+    assert outcome.passed and outcome.outcome == "converged", (outcome.outcome, outcome.message)
+
+
 @pytest.mark.parametrize("beta, zeta, seed", [
     # the spectral method converges in 0.3 s (16384 cells); its power-balance misfit (2.2e-3 of
     # μ) was 1.1 times the two sides' two-grid estimates, which the power balance's bound now

@@ -18,8 +18,9 @@ half-width, when that is larger; a step after a rejected one does not grow); con
 meet merge, contacts that vanish detach, contacts that close over the period close where full
 contact can be the state (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that
 closed it is shortened: on an incompressible solid below its closing penetration a gap of the
-volume the penetration fixes stays open), and the mesh zones are remade in the first steps
-and at rest. As the edges slow down the steps grow and become Newton's; once every mode of the
+volume the penetration fixes stays open), and the mesh zones are remade in the first steps,
+at rest, and for a step whose end has no field on the zones it was taken with (a cohesive
+zone's equations past their reach). As the edges slow down the steps grow and become Newton's; once every mode of the
 motion decays and Newton's iteration from the state contracts (its second step at most
 :data:`NEWTON_CONTRACTION` of its first, which is within :data:`NEWTON_REACH` half-widths: the
 state lies where the linearised motion holds, and the flow ends at Newton's root), or
@@ -364,11 +365,16 @@ class Relaxation:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
         r = _valid(after.residual, landed)
+        if r is None and not changed:
+            # no field at the step's end on the zones it was taken with (a cohesive zone's
+            # equations past their reach): it is evaluated on zones made for it, if they differ
+            after = _fresh(self.eq, m.system, landed, control) or m.system
+            r = None if after is m.system else _valid(after.residual, landed)
         # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
         # the speed -O r over the step (one residual a step: the one the next step needs);
-        # a step that changes the contact set is taken as it is (the set's change is the
-        # motion's event)
-        error = np.inf if r is None else _local_error(m, r, changed)
+        # a step that changes the contact set or its zones is taken as it is (the change is
+        # the motion's event)
+        error = np.inf if r is None else _local_error(m, r, after is not m.system)
         if error > self.tolerance:
             if after is not m.system:
                 systems.discard(after)      # a step not taken: its new system is let go
@@ -389,6 +395,7 @@ class Relaxation:
                         len(landed)))
         if changed:
             m.track = m.track[-1:]
+        if after is not m.system:
             m.system, m.J = after, None
             systems.append(after)
         if _travels(m.track):
