@@ -20,8 +20,8 @@ contact can be the state (:meth:`~.closed.ClosedContact.possible`; elsewhere the
 closed it is shortened: on an incompressible solid below its closing penetration a gap of the
 volume the penetration fixes stays open), and the mesh zones are remade in the first steps,
 at rest, and for a step whose end has no field on the zones it was taken with (a cohesive
-zone's equations past their reach). As the edges slow down the steps grow and become Newton's; once every mode of the
-motion decays and Newton's iteration from the state contracts (its second step at most
+zone's equations past their reach). As the edges slow down the steps grow and become
+Newton's; once every mode of the motion decays and Newton's iteration from the state contracts (its second step at most
 :data:`NEWTON_CONTRACTION` of its first, which is within :data:`NEWTON_REACH` half-widths: the
 state lies where the linearised motion holds, and the flow ends at Newton's root), or
 ``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance, the equilibrium solve
