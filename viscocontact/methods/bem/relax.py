@@ -9,37 +9,37 @@ Griffith balance), at fixed speed ζ and fixed control, until the edges stop,
     dX_i/dt = -o_i r_i(X),   o_i = +1 for a right edge, -1 for a left one,
 
 so that an edge whose residual is negative (it would advance) advances, and one with a
-positive residual recedes. The flow is integrated by linearly implicit Euler steps,
-``(I/h + O J) δ = -O r`` (``J`` refreshed after a rejected step and every
-:data:`JACOBIAN_AGE` steps), with the step ``h`` chosen so that each step's local error,
-``h²/2·Ẍ`` estimated as ``h/2`` times the change of the edges' speed over the step (one
-residual a step), is within ``tolerance`` of its contact's half-width (or of the mean
-half-width, when that is larger; a step after a rejected one does not grow); contacts that
-meet merge, contacts that vanish detach, contacts that close over the period close where full
-contact can be the state (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that
-closed it is shortened: on an incompressible solid below its closing penetration a gap of the
-volume the penetration fixes stays open), and the mesh zones are remade in the first steps,
-at rest, and for a step whose end has no field on the zones it was taken with (a cohesive
-zone's equations past their reach). As the edges slow down the steps grow and become
-Newton's; once every mode of the motion decays and Newton's iteration from the state contracts (its second step at most
-:data:`NEWTON_CONTRACTION` of its first, which is within :data:`NEWTON_REACH` half-widths: the
-state lies where the linearised motion holds, and the flow ends at Newton's root), or
-``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance, the equilibrium solve
-finishes from there with the contact set held, on the trial budgets of an approach step (at a
-fold, where the root is gone, it fails fast and the motion goes on). Just past a fold the edges
-slow down where the root has vanished (a bottleneck whose residual can fall below the rest
-level); where the equilibrium solve finds no root at rest, the motion goes on through it.
-Where the profile penetrates at its root, contacts are born there, at zero size, and the
-motion goes on with them (a born contact grows as every edge moves); where a contact at rest
-carries more tension than the interface holds (any, without adhesion; the cohesive stress σ̃0
-under a cohesive law), it splits there and the motion goes on with its parts. Where the parts
-merge again and split at the same place a third time, the tension is a nearly vanishing stress
-whose sign the mesh does not resolve: the contact is refined there, as the equilibrium solve
-refines it (:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which
-has no shorter step to get past it), and the motion goes on. Where every contact detaches while
-the profile penetrates the undeformed solid, contacts are born there and the motion goes on;
-born again where they were, the motion is periodic (no steady state). So merges, detachments,
-births and splits all happen on the way, as the motion makes them.
+positive residual recedes. The flow is integrated by linearly implicit Euler steps, ``(I/h + O
+J) δ = -O r`` (``J`` refreshed after a rejected step and every :data:`JACOBIAN_AGE` steps), with
+the step ``h`` chosen so that each step's local error, ``h²/2·Ẍ`` estimated as ``h/2`` times the
+change of the edges' speed over the step (one residual a step), is within ``tolerance`` of its
+contact's half-width (or of the mean half-width, when that is larger; a step after a rejected
+one does not grow); contacts that meet merge, contacts that vanish detach, contacts that close
+over the period close where full contact can be the state
+(:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
+incompressible solid below its closing penetration a gap of the volume the penetration fixes
+stays open), and the mesh zones are remade in the first steps, at rest, and for a step whose end
+has no field on the zones it was taken with (a cohesive zone's equations past their reach). As
+the edges slow down the steps grow and become Newton's; once every mode of the motion decays and
+Newton's iteration from the state contracts (its second step at most :data:`NEWTON_CONTRACTION`
+of its first, which is within :data:`NEWTON_REACH` half-widths: the state lies where the
+linearised motion holds, and the flow ends at Newton's root), or ``max|r|`` has fallen to
+:data:`SETTLED` times the solver's tolerance, the equilibrium solve finishes from there with the
+contact set held, on the trial budgets of an approach step (at a fold, where the root is gone,
+it fails fast and the motion goes on). Just past a fold the edges slow down where the root has
+vanished (a bottleneck whose residual can fall below the rest level); where the equilibrium
+solve finds no root at rest, the motion goes on through it. Where the profile penetrates at its
+root, contacts are born there, at zero size, and the motion goes on with them (a born contact
+grows as every edge moves); where a contact at rest carries more tension than the interface
+holds (any, without adhesion; the cohesive stress σ̃0 under a cohesive law), it splits there and
+the motion goes on with its parts. Where the parts merge again and split at the same place a
+third time, the tension is a nearly vanishing stress whose sign the mesh does not resolve: the
+contact is refined there, as the equilibrium solve refines it
+(:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which has no
+shorter step to get past it), and the motion goes on. Where every contact detaches while the
+profile penetrates the undeformed solid, contacts are born there and the motion goes on; born
+again where they were, the motion is periodic (no steady state). So merges, detachments, births
+and splits all happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
