@@ -49,6 +49,12 @@ class PreparedKernel:
         (:func:`branch_regimes` with ``tolerance``).
     tolerance : float or None
         The tolerance the regimes were decided with.
+    tables, table
+        The memory tables of the active branches and their sum as one cubic table
+        (:mod:`~viscocontact.kernels.table`; None for an elastic half-plane, whose
+        antiderivative is the Clausen function alone): built on first use, since only the
+        real-space evaluations (the boundary-element method) read them; the Fourier view
+        (:meth:`multiplier`, the spectral methods) does not.
     """
 
     kernel: object
@@ -57,7 +63,6 @@ class PreparedKernel:
     weights: np.ndarray
     zetas: np.ndarray
     mean: float
-    tables: tuple
     correction: object  # CubicSpline of the layer correction antiderivative, or None
     correction_values: object  # CubicSpline of the layer correction kernel, or None
     all_weights: np.ndarray
@@ -65,9 +70,24 @@ class PreparedKernel:
     k_inf: float
     regimes: np.ndarray
     tolerance: float | None = None
-    #: the antiderivative as one cubic table (:mod:`~viscocontact.kernels.table`); None for an
-    #: elastic half-plane, whose antiderivative is the Clausen function alone
-    table: KernelTable | None = None
+    _built: dict = attrs.field(factory=dict, init=False, repr=False)
+
+    @property
+    def tables(self) -> tuple:
+        """The :class:`MemoryTable` of each active branch (built on first use)."""
+        if "tables" not in self._built:
+            self._built["tables"] = tuple(MemoryTable(zi) for zi in self.zetas)
+        return self._built["tables"]
+
+    @property
+    def table(self) -> KernelTable | None:
+        """The antiderivative as one cubic table (built on first use); None for an elastic
+        half-plane, whose antiderivative is the Clausen function alone."""
+        if "table" not in self._built:
+            self._built["table"] = (
+                KernelTable.build(self.instantaneous, self.weights, self.tables, self.correction)
+                if len(self.zetas) or self.correction is not None else None)
+        return self._built["table"]
 
     @classmethod
     def build(cls, kernel, rheology, zeta: float, tolerance: float | None = None) -> "PreparedKernel":
@@ -85,17 +105,14 @@ class PreparedKernel:
         inst = k_inf + float(np.sum(w_all[regime == RELAXED]))
         active = regime == ACTIVE
         w, z = w_all[active], z_all[active]
-        tables = tuple(MemoryTable(zi) for zi in z)
         corr, corr_v = None, None
         n_modes = kernel.correction_modes()
         if n_modes > 0:
             corr, corr_v = _correction_splines(kernel, k_inf, w_all, z_all, n_modes)
-        table = (KernelTable.build(inst, w, tables, corr) if tables or corr is not None
-                 else None)
         return cls(kernel=kernel, zeta=zeta, instantaneous=inst, weights=w, zetas=z,
-                   mean=float(kernel.mean_compliance()), tables=tables, correction=corr,
+                   mean=float(kernel.mean_compliance()), correction=corr,
                    correction_values=corr_v, all_weights=w_all, all_zetas=z_all, k_inf=k_inf,
-                   regimes=regime, tolerance=tolerance, table=table)
+                   regimes=regime, tolerance=tolerance)
 
     def relaxation_lengths(self) -> np.ndarray:
         """``ζ τ_r,i/τ`` of the active branches, ascending: the memory lengths of the relaxation
