@@ -368,8 +368,9 @@ class Relaxation:
         if r is None and not changed:
             # no field at the step's end on the zones it was taken with (a cohesive zone's
             # equations past their reach): it is evaluated on zones made for it, if they differ
-            after = _fresh(self.eq, m.system, landed, control) or m.system
-            r = None if after is m.system else _valid(after.residual, landed)
+            fresh = _fresh(self.eq, m.system, landed, control)
+            if fresh is not None:
+                after, r = fresh, _valid(fresh.residual, landed)
         # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
         # the speed -O r over the step (one residual a step: the one the next step needs);
         # a step that changes the contact set or its zones is taken as it is (the change is
