@@ -265,7 +265,8 @@ class Relaxation:
             # the first steps' zones are remade (they move the edges the most), and those
             # of the rest state, on a budget of their own
             if ((near and m.rezoned < REZONED) or (m.early and m.moved < REZONED)) \
-                    and self._rezone(m, control, systems, count=near):
+                    and self._rezone(m, control, systems):
+                m.rezoned += int(near)
                 continue
             if near:
                 rest = self._at_rest(m, control)
@@ -296,14 +297,14 @@ class Relaxation:
         at a residual of noise."""
         return self.eq.noise_floor(m.system, m.x, self.eq.tolerances).residual
 
-    def _rezone(self, m: "_Motion", control: Control, systems: "_Systems",
-                count: bool = True) -> bool:
-        """Whether the edges, at rest, have moved out of the mesh zones they were solved with
-        (which the equilibrium solve would remake): then the motion goes on, on new ones."""
+    def _rezone(self, m: "_Motion", control: Control, systems: "_Systems") -> bool:
+        """Whether the edges have moved out of the mesh zones they were solved with (which the
+        equilibrium solve would remake): then the motion goes on, on new ones (the caller
+        counts a rest state's rezones against their budget)."""
         fresh = _fresh(self.eq, m.system, m.x, control)
         if fresh is None:
             return False
-        m.system, m.J, m.rezoned = fresh, None, m.rezoned + int(count)
+        m.system, m.J = fresh, None
         systems.append(fresh)
         m.r = _valid(fresh.residual, m.x)
         return True
