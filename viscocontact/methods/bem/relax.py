@@ -10,16 +10,19 @@ Griffith balance), at fixed speed ζ and fixed control, until the edges stop,
 
 so that an edge whose residual is negative (it would advance) advances, and one with a
 positive residual recedes. The flow is integrated by linearly implicit Euler steps, ``(I/h + O
-J) δ = -O r`` (``J`` refreshed after a rejected step and every :data:`JACOBIAN_AGE` steps), with
+J) δ = -O r`` (``J`` refreshed every :data:`JACOBIAN_AGE` steps and after a rejected step
+taken with an older one), with
 the step ``h`` chosen so that each step's local error, ``h²/2·Ẍ`` estimated as ``h/2`` times the
 change of the edges' speed over the step (one residual a step), is within ``tolerance`` of its
-contact's half-width (or of the mean half-width, when that is larger; a step after a rejected
-one does not grow); contacts that meet merge, contacts that vanish detach, contacts that close
+contact's half-width (or of the mean half-width, when that is larger; the next step follows
+the trend of the edges' acceleration, and a step after a rejected one does not grow); contacts
+that meet merge, contacts that vanish detach, contacts that close
 over the period close where full contact can be the state
 (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
 incompressible solid below its closing penetration a gap of the volume the penetration fixes
-stays open), and the mesh zones are remade in the first steps, at rest, and for a step whose end
-has no field on the zones it was taken with (a cohesive zone's equations past their reach). As
+stays open), and the mesh zones are remade at the end of each of the first steps (its local
+error measured there), at rest, and for a step whose end has no field on the zones it was taken
+with (a cohesive zone's equations past their reach). As
 the edges slow down the steps grow and become Newton's; once every mode of the motion decays and
 Newton's iteration from the state contracts (its second step at most :data:`NEWTON_CONTRACTION`
 of its first, which is within :data:`NEWTON_REACH` half-widths: the state lies where the
@@ -127,6 +130,8 @@ class _Motion:
     rezoned: int = 0
     moved: int = 0                      # accepted steps
     rejected: bool = False              # the last step was rejected
+    growth: float | None = None         # the last accepted step's error over h² (the edges'
+    #                                     acceleration), whose trend the next step follows
     ghost: float = np.inf               # max|r| below which the motion is at rest again
     early: bool = True                  # no equilibrium solve tried yet: zones are remade
     #                                     (the motion's first steps move edges the most)
@@ -264,8 +269,7 @@ class Relaxation:
             near = size <= min(SETTLED * self._resolved(m), m.ghost)
             # the first steps' zones are remade (they move the edges the most), and those
             # of the rest state, on a budget of their own
-            if ((near and m.rezoned < REZONED) or (m.early and m.moved < REZONED)) \
-                    and self._rezone(m, control, systems):
+            if near and m.rezoned < REZONED and self._rezone(m, control, systems):
                 m.rezoned += int(near)
                 continue
             if near:
@@ -365,8 +369,12 @@ class Relaxation:
         if full or not landed.size:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
+        # the first steps, which move the edges the most, end on zones made for their end
+        rezoned = (None if changed or not (m.early and m.moved < REZONED)
+                   else _fresh(self.eq, m.system, landed, control))
+        after = after if rezoned is None else rezoned
         r = _valid(after.residual, landed)
-        if r is None and not changed:
+        if r is None and not changed and rezoned is None:
             # no field at the step's end on the zones it was taken with (a cohesive zone's
             # equations past their reach): it is evaluated on zones made for it, if they differ
             fresh = _fresh(self.eq, m.system, landed, control)
@@ -374,20 +382,20 @@ class Relaxation:
                 after, r = fresh, _valid(fresh.residual, landed)
         # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
         # the speed -O r over the step (one residual a step: the one the next step needs);
-        # a step that changes the contact set or its zones is taken as it is (the change is
-        # the motion's event)
-        error = np.inf if r is None else _local_error(m, r, after is not m.system)
+        # a step that changes the contact set is taken as it is (the change is the motion's
+        # event), and so is one whose end has no field on its zones
+        error = np.inf if r is None else _local_error(
+            m, r, changed or (after is not m.system and rezoned is None))
         if error > self.tolerance:
             if after is not m.system:
                 systems.discard(after)      # a step not taken: its new system is let go
             # no field at the step's end (a Maugis-Dugdale zone's equations): a quarter step
             m.h *= 0.25 if r is None else max(0.2, 0.9 * np.sqrt(self.tolerance / error))
-            m.J, m.rejected = None, r is not None
+            # (the edges have not moved: a Jacobian taken at them is kept)
+            m.J = None if m.age or r is None else m.J
+            m.rejected = r is not None
             return None
-        # the step after a rejected one does not grow (Hairer, Nørsett & Wanner I, II.4):
-        # while the edges accelerate, a grown step is rejected again
-        m.h *= min(1.0 if m.rejected else 4.0,
-                   0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
+        m.h *= _grown(m, error, self.tolerance)
         m.rejected = False
         m.moved, m.age, m.x, m.r = m.moved + 1, m.age + 1, landed, r
         for kind, word in (("merge", "merge"), ("detachment", "detach")):
@@ -479,6 +487,20 @@ def _newton_start(system, r, J, x) -> np.ndarray | None:
     if float(np.max(np.abs(second) / scale)) > NEWTON_CONTRACTION * step:
         return None
     return landed
+
+
+def _grown(m: "_Motion", error: float, tolerance: float) -> float:
+    """The factor of the next step after an accepted one with local ``error``: the error
+    grows as ``h²`` times the edges' acceleration, whose growth over the last step is taken to
+    go on (a predictive controller, Gustafsson 1994: while the edges accelerate, a step grown
+    from the last error alone is rejected every other time); the step after a rejected one does
+    not grow (Hairer, Nørsett & Wanner I, II.4)."""
+    growth = error / m.h ** 2 if error > 0.0 else None
+    trend = (1.0 if growth is None or m.growth is None
+             else float(np.clip(growth / m.growth, 1.0, 4.0)))
+    m.growth = growth
+    return min(1.0 if m.rejected else 4.0,
+               0.9 * np.sqrt(tolerance / max(error * trend, 1e-300)))
 
 
 def _local_error(m: "_Motion", r: np.ndarray, changed: bool) -> float:
