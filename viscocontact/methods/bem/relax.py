@@ -20,9 +20,8 @@ that meet merge, contacts that vanish detach, contacts that close
 over the period close where full contact can be the state
 (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
 incompressible solid below its closing penetration a gap of the volume the penetration fixes
-stays open), and the mesh zones are remade at the end of each of the first steps (its local
-error measured there), at rest, and for a step whose end has no field on the zones it was taken
-with (a cohesive zone's equations past their reach). As
+stays open), and the mesh zones are remade in the first steps, at rest, and for a step whose end
+has no field on the zones it was taken with (a cohesive zone's equations past their reach). As
 the edges slow down the steps grow and become Newton's; once every mode of the motion decays and
 Newton's iteration from the state contracts (its second step at most :data:`NEWTON_CONTRACTION`
 of its first, which is within :data:`NEWTON_REACH` half-widths: the state lies where the
@@ -269,7 +268,8 @@ class Relaxation:
             near = size <= min(SETTLED * self._resolved(m), m.ghost)
             # the first steps' zones are remade (they move the edges the most), and those
             # of the rest state, on a budget of their own
-            if near and m.rezoned < REZONED and self._rezone(m, control, systems):
+            if ((near and m.rezoned < REZONED) or (m.early and m.moved < REZONED)) \
+                    and self._rezone(m, control, systems):
                 m.rezoned += int(near)
                 continue
             if near:
@@ -369,12 +369,8 @@ class Relaxation:
         if full or not landed.size:
             return self._ended(landed, full, control)
         after = self.eq.system(control, landed) if changed else m.system
-        # the first steps, which move the edges the most, end on zones made for their end
-        rezoned = (None if changed or not (m.early and m.moved < REZONED)
-                   else _fresh(self.eq, m.system, landed, control))
-        after = after if rezoned is None else rezoned
         r = _valid(after.residual, landed)
-        if r is None and not changed and rezoned is None:
+        if r is None and not changed:
             # no field at the step's end on the zones it was taken with (a cohesive zone's
             # equations past their reach): it is evaluated on zones made for it, if they differ
             fresh = _fresh(self.eq, m.system, landed, control)
@@ -382,10 +378,9 @@ class Relaxation:
                 after, r = fresh, _valid(fresh.residual, landed)
         # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
         # the speed -O r over the step (one residual a step: the one the next step needs);
-        # a step that changes the contact set is taken as it is (the change is the motion's
-        # event), and so is one whose end has no field on its zones
-        error = np.inf if r is None else _local_error(
-            m, r, changed or (after is not m.system and rezoned is None))
+        # a step that changes the contact set or its zones is taken as it is (the change is
+        # the motion's event)
+        error = np.inf if r is None else _local_error(m, r, after is not m.system)
         if error > self.tolerance:
             if after is not m.system:
                 systems.discard(after)      # a step not taken: its new system is let go
