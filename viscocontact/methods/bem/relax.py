@@ -10,13 +10,11 @@ Griffith balance), at fixed speed ζ and fixed control, until the edges stop,
 
 so that an edge whose residual is negative (it would advance) advances, and one with a
 positive residual recedes. The flow is integrated by linearly implicit Euler steps, ``(I/h + O
-J) δ = -O r`` (``J`` refreshed every :data:`JACOBIAN_AGE` steps and after a rejected step
-taken with an older one), with
+J) δ = -O r`` (``J`` refreshed after a rejected step and every :data:`JACOBIAN_AGE` steps), with
 the step ``h`` chosen so that each step's local error, ``h²/2·Ẍ`` estimated as ``h/2`` times the
 change of the edges' speed over the step (one residual a step), is within ``tolerance`` of its
-contact's half-width (or of the mean half-width, when that is larger; the next step follows
-the trend of the edges' acceleration, and a step after a rejected one does not grow); contacts
-that meet merge, contacts that vanish detach, contacts that close
+contact's half-width (or of the mean half-width, when that is larger; a step after a rejected
+one does not grow); contacts that meet merge, contacts that vanish detach, contacts that close
 over the period close where full contact can be the state
 (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
 incompressible solid below its closing penetration a gap of the volume the penetration fixes
@@ -129,8 +127,6 @@ class _Motion:
     rezoned: int = 0
     moved: int = 0                      # accepted steps
     rejected: bool = False              # the last step was rejected
-    growth: float | None = None         # the last accepted step's error over h² (the edges'
-    #                                     acceleration), whose trend the next step follows
     ghost: float = np.inf               # max|r| below which the motion is at rest again
     early: bool = True                  # no equilibrium solve tried yet: zones are remade
     #                                     (the motion's first steps move edges the most)
@@ -386,11 +382,12 @@ class Relaxation:
                 systems.discard(after)      # a step not taken: its new system is let go
             # no field at the step's end (a Maugis-Dugdale zone's equations): a quarter step
             m.h *= 0.25 if r is None else max(0.2, 0.9 * np.sqrt(self.tolerance / error))
-            # (the edges have not moved: a Jacobian taken at them is kept)
-            m.J = None if m.age or r is None else m.J
-            m.rejected = r is not None
+            m.J, m.rejected = None, r is not None
             return None
-        m.h *= _grown(m, error, self.tolerance)
+        # the step after a rejected one does not grow (Hairer, Nørsett & Wanner I, II.4):
+        # while the edges accelerate, a grown step is rejected again
+        m.h *= min(1.0 if m.rejected else 4.0,
+                   0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
         m.rejected = False
         m.moved, m.age, m.x, m.r = m.moved + 1, m.age + 1, landed, r
         for kind, word in (("merge", "merge"), ("detachment", "detach")):
@@ -482,20 +479,6 @@ def _newton_start(system, r, J, x) -> np.ndarray | None:
     if float(np.max(np.abs(second) / scale)) > NEWTON_CONTRACTION * step:
         return None
     return landed
-
-
-def _grown(m: "_Motion", error: float, tolerance: float) -> float:
-    """The factor of the next step after an accepted one with local ``error``: the error
-    grows as ``h²`` times the edges' acceleration, whose growth over the last step is taken to
-    go on (a predictive controller, Gustafsson 1994: while the edges accelerate, a step grown
-    from the last error alone is rejected every other time); the step after a rejected one does
-    not grow (Hairer, Nørsett & Wanner I, II.4)."""
-    growth = error / m.h ** 2 if error > 0.0 else None
-    trend = (1.0 if growth is None or m.growth is None
-             else float(np.clip(growth / m.growth, 1.0, 4.0)))
-    m.growth = growth
-    return min(1.0 if m.rejected else 4.0,
-               0.9 * np.sqrt(tolerance / max(error * trend, 1e-300)))
 
 
 def _local_error(m: "_Motion", r: np.ndarray, changed: bool) -> float:
