@@ -214,6 +214,27 @@ def test_a_motion_step_without_a_field_on_its_zones_is_evaluated_on_new_ones():
     assert outcome.passed and outcome.outcome == "converged", (outcome.outcome, outcome.message)
 
 
+# campaign seed 234 (drawn values): on the way, the Maugis-Dugdale zone iteration met zones at
+# their root past the minimum of K̃ (long zones; under load control K̃ does not fall as a long
+# zone grows at the fixed load) and moved them away, to shorter zones, from which it found no
+# root; the solve ran past 45 s at 41380a7. Newton's step is now taken where it changes no zone
+# by more than a tenth (a root's neighbourhood): converged in about 20 s
+LONG_ROUGH_MD_ZONES = {
+    "profile": {"kind": "self-affine", "hurst": 0.6711639498056313, "scales": 67,
+                "rms": 0.0037513202871212294, "seed": 6901},
+    "rheology": {"kind": "standard-linear-solid", "beta": 165.66798150699552},
+    "kernel": {"kind": "half-plane"},
+    "adhesion": {"kind": "maugis-dugdale", "gamma": 1.4338037268639676e-06,
+                 "range": 0.00027613673321702807},
+    "load": {"mean_pressure": 0.20074348640697504}, "sliding": {"zeta": 0.006266912031851358},
+    "solver": {"kind": "broyden"}}
+
+
+def test_zones_at_a_root_past_the_minimum_stay_there():
+    outcome = run_scene(LONG_ROUGH_MD_ZONES, time_limit=LIMIT)
+    assert outcome.passed and outcome.outcome == "converged", (outcome.outcome, outcome.message)
+
+
 @pytest.mark.parametrize("beta, zeta, seed", [
     # the spectral method converges in 0.3 s (16384 cells); its power-balance misfit (2.2e-3 of
     # μ) was 1.1 times the two sides' two-grid estimates, which the power balance's bound now

@@ -51,6 +51,9 @@ EDGE_STEP = 1e-12
 ITERATIONS = 60
 #: Largest growth factor of a zone's ``√d`` in one Newton iteration.
 GROWTH = 1.5
+#: A Newton step that changes no zone's ``√d`` by more than this fraction of it is taken even
+#: where a zone lies past the minimum of its equation (the state is close to a root).
+LOCAL_STEP = 0.1
 #: Zones are kept this fraction of the free interval short of meeting their neighbour ...
 ROOM = 1.0 - 1e-9
 #: ... and zones that fill it (a filled neck) cover it to round-off.
@@ -510,6 +513,16 @@ class _ZoneNewton:
         k, t = self.k, self.t
         beyond = np.diag(J) >= 0.0
         step = None
+        if np.any(beyond) and np.all(t[idx] > 0.0):
+            # close to a root Newton's step is taken whatever the sign of the diagonal: a
+            # zone at its root past the minimum of K̃ (a long zone under load control, where
+            # K̃ does not fall as the zone grows at a fixed load) is not moved away from it
+            try:
+                local = np.linalg.solve(J, -k[idx])
+            except np.linalg.LinAlgError:
+                local = None
+            if local is not None and np.all(np.abs(local) <= LOCAL_STEP * t[idx]):
+                return local, np.zeros(len(idx), bool), np.zeros(len(idx), bool)
         if not np.any(beyond):
             try:
                 step = np.linalg.solve(J, -k[idx])
