@@ -214,11 +214,10 @@ def test_a_motion_step_without_a_field_on_its_zones_is_evaluated_on_new_ones():
     assert outcome.passed and outcome.outcome == "converged", (outcome.outcome, outcome.message)
 
 
-# campaign seed 234 (drawn values): on the way, the Maugis-Dugdale zone iteration met zones at
-# their root past the minimum of K̃ (long zones; under load control K̃ does not fall as a long
-# zone grows at the fixed load) and moved them away, to shorter zones, from which it found no
-# root; the solve ran past 45 s at 41380a7. Newton's step is now taken where it changes no zone
-# by more than a tenth (a root's neighbourhood): converged in about 20 s
+# campaign seed 234 (drawn values): the Maugis-Dugdale zone iteration meets zones whose
+# diagonal says "past the minimum of K̃" within a tenth of their root (19 times in this solve),
+# and shortened them away from it; the solve ran past 45 s at 41380a7. With Newton's step taken
+# there it converges in about 20 s
 LONG_ROUGH_MD_ZONES = {
     "profile": {"kind": "self-affine", "hurst": 0.6711639498056313, "scales": 67,
                 "rms": 0.0037513202871212294, "seed": 6901},

@@ -507,8 +507,9 @@ class _ZoneNewton:
 
     def _newton_step(self, idx: np.ndarray):
         """``(step, beyond, wrong)`` among the zones ``idx``: the Newton step in ``√d`` (None
-        when some zone is ``beyond`` the minimum of its equation, its diagonal >= 0), and the
-        zones told to go the wrong way (to shrink where they need to grow, or beyond)."""
+        when some zone is ``beyond`` the minimum of its equation, its diagonal >= 0, unless the
+        step changes no zone by more than :data:`LOCAL_STEP` of it), and the zones told to go
+        the wrong way (to shrink where they need to grow, or beyond)."""
         J = self._jacobian(idx)
         k, t = self.k, self.t
         beyond = np.diag(J) >= 0.0
