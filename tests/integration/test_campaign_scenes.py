@@ -195,6 +195,12 @@ def test_the_motion_does_not_close_a_gap_that_the_penetration_keeps_open():
     assert outcome.passed, (outcome.outcome, outcome.message)
 
 
+def _converges(scene: dict) -> None:
+    """The scene converges and passes its checks."""
+    outcome = run_scene(scene, time_limit=LIMIT)
+    assert outcome.passed and outcome.outcome == "converged", (outcome.outcome, outcome.message)
+
+
 # campaign seed 189 (drawn values): past a fold the one contact grows towards closure, and its
 # steps land where the Maugis-Dugdale zones' equations have no field on the zones the motion
 # moved with; quartered again and again, the steps fell to 1e-15 and the motion ran for 2000
@@ -210,8 +216,7 @@ GROWING_WAVY_MD_LAYER = {
 
 
 def test_a_motion_step_without_a_field_on_its_zones_is_evaluated_on_new_ones():
-    outcome = run_scene(GROWING_WAVY_MD_LAYER, time_limit=LIMIT)
-    assert outcome.passed and outcome.outcome == "converged", (outcome.outcome, outcome.message)
+    _converges(GROWING_WAVY_MD_LAYER)
 
 
 # campaign seed 234 (drawn values): the Maugis-Dugdale zone iteration meets zones whose
@@ -230,8 +235,7 @@ LONG_ROUGH_MD_ZONES = {
 
 
 def test_zones_at_a_root_past_the_minimum_stay_there():
-    outcome = run_scene(LONG_ROUGH_MD_ZONES, time_limit=LIMIT)
-    assert outcome.passed and outcome.outcome == "converged", (outcome.outcome, outcome.message)
+    _converges(LONG_ROUGH_MD_ZONES)
 
 
 @pytest.mark.parametrize("beta, zeta, seed", [

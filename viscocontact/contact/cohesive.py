@@ -513,30 +513,25 @@ class _ZoneNewton:
         J = self._jacobian(idx)
         k, t = self.k, self.t
         beyond = np.diag(J) >= 0.0
-        step = None
-        if np.any(beyond) and np.all(t[idx] > 0.0):
+        try:
+            step = np.linalg.solve(J, -k[idx])
+        except np.linalg.LinAlgError:
+            step = None
+        if np.any(beyond):
             # close to a root Newton's step is taken whatever the sign of the diagonal: a
             # zone at its root past the minimum of K̃ (a long zone under load control, where
             # K̃ does not fall as the zone grows at a fixed load) is not moved away from it
-            try:
-                local = np.linalg.solve(J, -k[idx])
-            except np.linalg.LinAlgError:
-                local = None
-            if local is not None and np.all(np.abs(local) <= LOCAL_STEP * t[idx]):
-                return local, np.zeros(len(idx), bool), np.zeros(len(idx), bool)
-        if not np.any(beyond):
-            try:
-                step = np.linalg.solve(J, -k[idx])
-            except np.linalg.LinAlgError:
-                raise ZoneError("the bounded-stress equations of the zones are singular") from None
-            if not np.all(np.isfinite(step)):
-                raise ZoneError("the bounded-stress equations of the zones gave a non-finite "
-                                "step")
-            # a zone that needs to grow (K̃ > 0) told to shrink: past the minimum of K̃, or
-            # held back by its neighbours; only a filled neck is tried then
-            wrong = (k[idx] > 0.0) & (step < 0.0) & (t[idx] > 0.0)
-        else:
-            wrong = beyond
+            if (step is not None and np.all(t[idx] > 0.0)
+                    and np.all(np.abs(step) <= LOCAL_STEP * t[idx])):
+                return step, np.zeros(len(idx), bool), np.zeros(len(idx), bool)
+            return None, beyond, beyond
+        if step is None:
+            raise ZoneError("the bounded-stress equations of the zones are singular")
+        if not np.all(np.isfinite(step)):
+            raise ZoneError("the bounded-stress equations of the zones gave a non-finite step")
+        # a zone that needs to grow (K̃ > 0) told to shrink: past the minimum of K̃, or held
+        # back by its neighbours; only a filled neck is tried then
+        wrong = (k[idx] > 0.0) & (step < 0.0) & (t[idx] > 0.0)
         return step, beyond, wrong
 
     def _fill_unscreened(self, idx: np.ndarray, wrong: np.ndarray) -> bool:
