@@ -6,7 +6,8 @@ stated tolerance. An adhesive scene needs the energy balance at every edge, whic
 has (the spectral method applies a finite-range cohesive law on its grid, but from the
 adhesionless contact, not along the loading path, so it serves as a cross-check and is asked
 for by name). When the spectral method cannot reach the requested tolerance on the largest grid
-it allows, the BEM finishes the job seeded with the grid's contact set; when the grid solve does
+it allows, the BEM finishes the job seeded with the grid's contact set (where the BEM does not
+converge, the grid's converged answer stands, with its estimate); when the grid solve does
 not converge at all (a very stiff solid at ζ ~ 1, whose trailing-edge layer the grid does not
 resolve), the BEM solves the scene from the caller's start. The other way round, when the BEM
 does not converge on an adhesive scene (or estimates its error above the tolerance) and the
@@ -111,9 +112,17 @@ class Auto(SolutionMethod):
             estimate = result.extras.get("error_estimate")
             start = result if result.n_contacts or result.full_contact else initial
             finished = BEM().solve(problem, start, fields=fields, prepared=prepared)
+            why = (f"the grid's error estimate {estimate:.2g} stayed above the tolerance "
+                   f"{self.tolerance:g}")
+            if not finished.converged:
+                # the grid's converged answer, with its estimate, is the better one to hand on
+                # than a failure (an adhesionless equilibrium is unique: the two methods look
+                # for the same state)
+                events.append(f"the bem, tried from the {method.name} contact set because {why}, "
+                              f"did not converge ({finished.message}); the grid's answer stands")
+                return result
             finished.extras.setdefault("events", []).insert(
-                0, f"method bem from the {method.name} contact set: the grid's error estimate "
-                   f"{estimate:.2g} stayed above the tolerance {self.tolerance:g}")
+                0, f"method bem from the {method.name} contact set: {why}")
             return finished
         return result
 

@@ -55,6 +55,34 @@ def test_the_bem_finishes_what_the_grid_cannot():
     assert grid.converged and grid.error_estimate > 1e-6
 
 
+def test_the_grid_answer_stands_where_the_bem_finish_fails(monkeypatch):
+    """The grid misses the tolerance and the BEM asked to finish does not converge: the grid's
+    converged answer is returned with its estimate (it warns that the tolerance was not met),
+    not the failure; the events say that the BEM was tried."""
+    import attrs
+
+    from viscocontact.errors import AccuracyWarning
+    from viscocontact.result import SolveStatus
+
+    solve = BEM.solve
+
+    def fails(self, *args, **kwargs):
+        return attrs.evolve(solve(self, *args, **kwargs), converged=False,
+                            status=SolveStatus.NOT_CONVERGED,
+                            message="contact set cycles (made to fail here)")
+
+    monkeypatch.setattr(BEM, "solve", fails)
+    auto = Auto(tolerance=1e-6, max_points=256)
+    with pytest.warns(AccuracyWarning, match="tolerance 1e-06 not met"):
+        result = _wavy(mean_pressure=0.3, method=auto).solve()
+    grid = _wavy(mean_pressure=0.3, method=Auto(tolerance=1e-6, max_points=256,
+                                                finish_with_bem=False)).solve()
+    assert result.converged and result.method == "spectral"
+    assert result.area == grid.area and result.error_estimate == grid.error_estimate > 1e-6
+    assert any("did not converge (contact set cycles" in e and "grid's answer stands" in e
+               for e in result.extras["events"])
+
+
 def test_the_bem_solves_what_the_grid_does_not_converge_on():
     """A very stiff solid at ζ = 1 (β = 1e4: a trailing-edge layer of ζ/β = 1e-4 that no grid of
     the default ladder resolves): the active set does not settle, and the BEM solves the scene
