@@ -10,7 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from viscocontact.adhesion import EnergyBalance
-from viscocontact.errors import ValidationError
+from viscocontact.errors import AccuracyWarning, ValidationError
 from viscocontact.kernels.half_plane import HalfPlane
 from viscocontact.kernels.layers import ConfinedLayer, FreeLayer
 from viscocontact.methods.base import SolutionMethod
@@ -286,6 +286,45 @@ def test_a_solve_that_does_not_converge_says_so(rheology, options):
     r = Spectral(points=4096, **options).solve(prob)
     assert not r.converged and r.status is SolveStatus.NOT_CONVERGED
     assert "did not converge" in r.message and r.residual > 1e-9
+
+
+def test_a_step_that_is_no_descent_direction_is_refused():
+    """The active set's line search returns None where the merit rises at every fraction down to
+    the smallest (the solve then stops, "no descent"), a fraction where it falls."""
+    from viscocontact.methods.spectral.primal_dual import LINE_SEARCH_SMALLEST, _line_search
+
+    p, g = np.array([1.0, 2.0]), np.array([1.0, 0.0])
+    assert _line_search(p, g, np.array([1.0, 0.0]), np.array([1.0, 0.0]), 1.0, 0.0) is None
+    assert _line_search(p, g, np.array([-0.5, 0.0]), np.array([-0.5, 0.0]), 1.0, 0.0) == 1.0
+    # a descent only below an eighth of the step: the first fraction that gives it
+    s = _line_search(p, g, np.array([-20.0, 0.0]), np.array([-20.0, 0.0]), 1.0, 0.0)
+    assert LINE_SEARCH_SMALLEST <= s <= 1.0 / 16
+
+
+def test_a_finer_grid_that_does_not_converge_leaves_the_last_converged_one(monkeypatch):
+    """The ladder's answer where a refinement does not converge: the last converged grid, with
+    its estimate from the grids below it, converged but short of the tolerance (the events say
+    which grid failed)."""
+    from viscocontact.methods.spectral import ladder
+
+    prob = _problem(profile=_rough(scales=50), rheology=SLS, zeta=1e-2)
+    method = Spectral(tolerance=1e-6, max_points=8192)
+    reference = method.solve(prob)          # the ladder to 8192 cells, short of 1e-6
+    assert reference.extras["points"] == 8192 and not reference.extras["tolerance_met"]
+    solve = ladder.grid_solve
+
+    def fails_at_8192(op, heights, **kw):
+        out = solve(op, heights, **kw)
+        return attrs.evolve(out, converged=False) if heights.size == 8192 else out
+
+    monkeypatch.setattr(ladder, "grid_solve", fails_at_8192)
+    with pytest.warns(AccuracyWarning, match="tolerance 1e-06 not met"):
+        r = attrs.evolve(prob, method=method).solve()
+    assert r.converged and r.extras["points"] == 4096 and not r.extras["tolerance_met"]
+    coarse = reference.extras["coarse"]            # the 4096-cell grid of the full ladder
+    assert coarse["points"] == 4096 and r.area == pytest.approx(coarse["area"], rel=1e-12)
+    assert 0 < r.error_estimate < np.inf
+    assert any("the answer is the 4096-cell grid's" in e for e in r.extras["events"])
 
 
 def test_warm_start_gives_the_same_answer_with_fewer_iterations():

@@ -149,7 +149,7 @@ class Ladder:
         if initial is not None:
             start = warm_start(grid, initial, self.load)
             events.append(f"warm start: {int(np.sum(start > 0))} of {grid.points} cells loaded")
-        previous, current = None, None
+        previous, current, before = None, None, None
         iterations = applications = 0
         errors: tuple[float, ...] = (np.inf, np.inf, np.inf)
         last = None
@@ -159,6 +159,12 @@ class Ladder:
             applications += sol.applications
             events.append(f"{grid.points} cells: {sol.solver}, {sol.message}")
             if not sol.converged:
+                if previous is not None and np.all(np.isfinite(errors[:2])):
+                    # a finer grid that does not converge leaves the last converged one, whose
+                    # estimate (from the grids below it) says how far it is from the limit
+                    events.append(f"the answer is the {previous.grid.points}-cell grid's: "
+                                  f"the {grid.points}-cell grid did not converge")
+                    current, previous = previous, before
                 break
             if previous is not None:
                 change = changes(previous, current, self.prep.m2, method.friction_floor)
@@ -172,7 +178,7 @@ class Ladder:
                     break
                 events.append(f"estimate {max(errors[:2]):.2g} > tolerance at {grid.points} "
                               "cells: grid doubled")
-            previous = current
+            previous, before = current, previous
             grid = UniformGrid.of(shape, 2 * grid.points)
             start = next_start(grid, current) if self.law is None else refine(sol.pressure)
         self.report(current, previous, errors)
