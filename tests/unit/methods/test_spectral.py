@@ -301,6 +301,24 @@ def test_a_step_that_is_no_descent_direction_is_refused():
     assert LINE_SEARCH_SMALLEST <= s <= 1.0 / 16
 
 
+def test_an_active_set_without_descent_stops(monkeypatch):
+    """Steps that are no descent direction, STALLED_STEPS in a row from the first damped one, stop
+    the solve at once ("no descent"), instead of a hundred steps of a thousandth (β = 1e4 at
+    ζ = 1, where the active set does not settle)."""
+    from viscocontact.methods.spectral import primal_dual
+    from viscocontact.methods.spectral.primal_dual import STALLED_STEPS, UNDAMPED_STEPS
+
+    prob = _problem(rheology=StandardLinearSolid(beta=1e4), zeta=1.0, mean_pressure=0.49878)
+    assert "100 active-set steps" in Spectral(points=1024).solve(prob).message
+    monkeypatch.setattr(primal_dual, "_line_search", lambda *args: None)
+    r = Spectral(points=1024).solve(prob)
+    import re
+
+    steps = re.search(r"no descent after (\d+) active-set steps", r.message)
+    assert not r.converged and steps is not None
+    assert STALLED_STEPS <= int(steps.group(1)) <= UNDAMPED_STEPS + STALLED_STEPS
+
+
 def test_a_finer_grid_that_does_not_converge_leaves_the_last_converged_one(monkeypatch):
     """The ladder's answer where a refinement does not converge: the last converged grid, with
     its estimate from the grids below it, converged but short of the tolerance (the events say

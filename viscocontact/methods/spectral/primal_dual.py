@@ -20,6 +20,11 @@ LOOSE_KRYLOV = 1e-2
 #: before the line search is switched on (three to six settle a set from a nearby start).
 LINE_SEARCH_SMALLEST = 1.0 / 1024
 UNDAMPED_STEPS = 10
+#: Consecutive active-set steps without descent after which the solve stops ("no descent").
+#: Converging solves have isolated ones, after which the set changes and the merit falls again
+#: (at most one in a row in the campaign's spectral scenes: seeds 4, 101 and 212 of its first
+#: 300); a stagnating one has them in a row (seed 186: every step from the 24th).
+STALLED_STEPS = 3
 
 
 class _StepControl:
@@ -200,6 +205,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     p, delta, g = _active_start(apply, r, start, mean_pressure, penetration, start_penetration)
     control = _StepControl(krylov_tolerance)
     floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
+    stalled = 0                           # consecutive steps without descent
     for it in range(1, max_iterations + 1):
         check_deadline()                  # the cooperative time limit (viscocontact.deadline)
         active = _active_cells(p, g, r, stiffness, it == 1, singular_when_closed)
@@ -213,13 +219,17 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         # stagnated on 1844 active cells of 65536, and the next set had 61919)
         s = (_line_search(p, g, step_p, step_g, stiffness, floor)
              if control.damped or solved[1] != 0 else 1.0)
+        stalled = stalled + 1 if s is None else 0
+        if s is None and stalled < STALLED_STEPS:
+            s = LINE_SEARCH_SMALLEST        # (an isolated one is followed by a new set)
         if s is None:
             p, g, res = _clipped(apply, p, r, delta, None)
             return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
                                 iterations=it, applications=apps[0], solver=ACTIVE_SET,
-                                message=f"no descent after {it} active-set steps: the step "
-                                        "does not reduce |min(p, c g)| at "
-                                        f"{LINE_SEARCH_SMALLEST:g} of its length")
+                                message=f"no descent after {it} active-set steps: "
+                                        f"{STALLED_STEPS} steps in a row do not reduce "
+                                        f"|min(p, c g)| at {LINE_SEARCH_SMALLEST:g} of their "
+                                        "length")
         p, g = p + s * step_p, g + s * step_g
         delta += s * step_d
         res = violation(g, p > 0)
