@@ -59,6 +59,13 @@ Contract for implementers
     grid must resolve. The grids apply it cell by cell
     (:func:`~viscocontact.methods.spectral.traction.grid_law`): by the tips of item 8 when the
     model has a Dugdale form, else through the traction itself. The default (``None``): none.
+12. Optionally, :meth:`singular_edges` says whether the edges carry a stress singularity at
+    equilibrium, through whose tips energy flows (the JKR-like energy balance), or not (no
+    adhesion, or a cohesive zone that bounds the stress). Without that flux the friction and
+    the dissipated power are two discretisations of one quantity, and the BEM's error estimate
+    bounds their estimates by their misfit (:func:`~viscocontact.methods.bem.estimate.estimate`).
+    The default: singular wherever there is a work of adhesion and no finite-range law
+    (items 8 and 11).
 
 Every method receives an :class:`~viscocontact.contact.edges.EdgeContext`, which computes
 stress-intensity factors and the energy terms of eqs. 4.12-4.14 for any edge advance.
@@ -201,6 +208,13 @@ class AdhesionModel(abc.ABC):
         in the same units: the bulk ``dissipation`` and the net ``edge_flux`` into the edges'
         singularities; None (the default) when it holds."""
         return None
+
+    def singular_edges(self, amplitude: float) -> bool:
+        """Whether the edges carry a stress singularity at equilibrium, through whose tips
+        energy flows, for a profile of amplitude ``amplitude`` (contract item 12): a work of
+        adhesion without a finite-range law (cohesive or traction-separation)."""
+        return (self.work_of_adhesion > 0.0 and self.cohesive_law(amplitude) is None
+                and self.traction(0.0) is None)
 
     @abc.abstractmethod
     def edge_terms(self, ctx) -> EdgeTerms:

@@ -295,3 +295,16 @@ def test_a_gap_below_the_range_outside_the_zones_snaps_into_contact():
     assert m.snap_in(x, np.full_like(x, 0.2), fields) == []
     for other in (EnergyBalance(gamma=5e-4), NoAdhesion(), MaugisDugdale(gamma=0.0, range=1e-2)):
         assert other.snap_in(x, gap, fields) == []
+
+
+def test_which_models_have_singular_edges():
+    """Contract item 12: energy flows into the tips of the energy balance's edges, not into a
+    cohesive zone's or an adhesionless contact's (the BEM's estimate bounds μ and the
+    dissipated power by their misfit for these)."""
+    from viscocontact.adhesion import EnergyBalance, LennardJones, NoAdhesion
+
+    assert EnergyBalance(gamma=1e-6).singular_edges(0.1)
+    assert not EnergyBalance(gamma=0.0).singular_edges(0.1)
+    assert not MaugisDugdale(gamma=1e-6, range=1e-3).singular_edges(0.1)
+    assert not LennardJones(gamma=1e-6, range=1e-3).singular_edges(0.1)
+    assert not NoAdhesion().singular_edges(0.1)

@@ -193,7 +193,7 @@ def estimate(parts, disc, prep, spec, state: State, target, adhesion) -> Estimat
     for run, order in runs:
         errors += np.asarray(relative_changes(fine, (run.area, run.friction, run.dissipation),
                                               prep.m2)) / (2.0**order - 1.0)
-    if adhesion.work_of_adhesion == 0.0 or adhesion.cohesive_law(prep.shape.amplitude):
+    if not adhesion.singular_edges(prep.shape.amplitude):
         # no flux into the edges (whose finite-δX balance is a model of its own, not a
         # discretisation of the bulk's power): the two frictions are bounded by their misfit
         misfit = abs(fine[1] - fine[2]) / friction_scale(fine[1], prep.m2)
