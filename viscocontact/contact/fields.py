@@ -373,11 +373,6 @@ def edge_flux_friction(stress_intensity, compliance: float, amplitude: float,
     return float(amplitude * flux / (2 * np.pi * mean_pressure))
 
 
-#: Most interval end points for which :func:`dissipated_friction` is computed (its cost is
-#: ``n²/2`` evaluations of the kernel's dissipative part: about 0.7 s at this size).
-DISSIPATION_MAX_NODES = 2048
-
-
 def dissipated_friction(kernel, mesh: Mesh, sigma: np.ndarray, amplitude: float,
                         mean_pressure: float, loads: KnownLoads | None = None,
                         chunk: int = 256) -> float:
@@ -391,7 +386,9 @@ def dissipated_friction(kernel, mesh: Mesh, sigma: np.ndarray, amplitude: float,
     (:meth:`~viscocontact.kernels.prepared.PreparedKernel.even_antiderivative`), the
     non-reciprocal part of the kernel; the elastic part does no work over a period. 0 for a
     kernel without a dissipative branch; NaN when the mean pressure vanishes to round-off (as
-    :func:`friction`) or beyond :data:`DISSIPATION_MAX_NODES` end points.
+    :func:`friction`). Its cost is ``n²/2`` evaluations of the kernel's dissipative part for
+    ``n`` end points (0.1 s at 2000), below that of one factorisation of the mesh's influence
+    matrix (``n³/6``).
     """
     left, right, stress = mesh.left, mesh.right, np.asarray(sigma, float)
     if loads is not None and loads.stress.size:
@@ -404,8 +401,6 @@ def dissipated_friction(kernel, mesh: Mesh, sigma: np.ndarray, amplitude: float,
     if len(getattr(kernel, "weights", ())) == 0 and getattr(kernel, "correction", None) is None:
         return 0.0
     nodes, inverse = np.unique(np.concatenate([left, right]), return_inverse=True)
-    if nodes.size > DISSIPATION_MAX_NODES:
-        return float("nan")
     jumps = np.zeros(nodes.size)
     np.add.at(jumps, inverse[:left.size], -stress)     # the stress starts at a left end
     np.add.at(jumps, inverse[left.size:], stress)      # and stops at a right end
