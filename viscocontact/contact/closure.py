@@ -42,3 +42,42 @@ def closes(closing_load: float, mean_height: float, mean_compliance: float,
     if mean_compliance == 0.0:
         return penetration >= 1.0 - mean_height - CLOSING_TOLERANCE
     return load_at(penetration, mean_height, mean_compliance) >= closing_load
+
+
+#: Relative round-off of the closed contact's friction and power (sums of ``n >= 1024``
+#: products of FFT coefficients): the floor of their error estimates.
+ROUND_OFF = 1e-10
+
+
+def measures(stress, slopes, loss, amplitude: float, mean_pressure: float):
+    """Friction (eq. 4.16) and the power fed into the solid as a friction,
+    ``4π Σ_m |σ̂_m|² Im K(m)`` (the spectral form of
+    :func:`~viscocontact.contact.fields.dissipated_friction`), of the closed contact's
+    oscillating stress ``stress`` (zero mean, on a uniform grid over the period, the profile's
+    ``slopes`` there) under ``p̃∞ = mean_pressure``; ``loss`` is ``Im K(m)`` for ``m = 1, 2, …``
+    (at least half the grid's points). NaN where the load vanishes to round-off."""
+    n = len(stress)
+    sigma = np.asarray(stress, dtype=float) - mean_pressure
+    if not abs(mean_pressure) > 1e-12 * float(np.mean(np.abs(sigma))):
+        return np.nan, np.nan
+    mu = float(np.mean(sigma * slopes) / mean_pressure)
+    coefficients = np.fft.rfft(stress)[1:] / n
+    power = 4 * np.pi * float(np.sum(np.abs(coefficients) ** 2 * loss[:coefficients.size]))
+    return mu, amplitude * power / (2 * np.pi * mean_pressure)
+
+
+def estimates(stress, slopes, loss, amplitude: float, mean_pressure: float, scale) -> dict:
+    """The closed contact's friction, dissipated power and their error estimates: the area is
+    exact (2π); μ and the power change by what every other grid point gives (nothing, for a
+    profile with fewer modes than a quarter of the points, but round-off: the floor
+    :data:`ROUND_OFF`), relative to ``scale(μ)`` (the methods' ``max(|μ|, floor·√m2)``).
+    Returns μ and the result's ``friction_dissipation``, ``error_estimate`` and
+    ``estimates``."""
+    mu, power = measures(stress, slopes, loss, amplitude, mean_pressure)
+    half = measures(stress[::2], slopes[::2], loss, amplitude, mean_pressure)
+    size = scale(mu)
+    errors = [max(abs(a - b) / size, ROUND_OFF) if np.isfinite(a - b) else np.nan
+              for a, b in zip((mu, power), half)]
+    return mu, {"friction_dissipation": power, "error_estimate": float(errors[0]),
+                "estimates": {"area": 0.0, "friction": float(errors[0]),
+                              "dissipation": float(errors[1]), "friction_scale": size}}

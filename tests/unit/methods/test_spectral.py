@@ -223,6 +223,21 @@ def test_closed_contact_is_reported_as_the_bem_reports_it(kernel, load):
     assert np.allclose(s.fields["pressure"], b.fields["pressure"], rtol=0, atol=1e-9)
 
 
+def test_closed_contact_carries_its_power_and_estimates():
+    """Both methods' closed contacts report the dissipated power and an error estimate: the
+    area exact, μ and the power exact but for round-off on a grid four times the sinusoid's
+    mode (the estimate's floor), and equal to each other within those estimates."""
+    from viscocontact.contact.closure import ROUND_OFF
+
+    prob = _problem(rheology=SLS, zeta=0.3, mean_pressure=3.0)
+    for r in (Spectral().solve(prob), prob.solve()):
+        assert r.full_contact and r.converged
+        est = r.extras["estimates"]
+        assert est["area"] == 0.0 and r.error_estimate == est["friction"] == ROUND_OFF
+        assert abs(r.friction - r.extras["friction_dissipation"]) <= (
+            (est["friction"] + est["dissipation"]) * est["friction_scale"])
+
+
 @pytest.mark.parametrize("rheology, zeta", [(Elastic(), 0.0), (SLS, 0.5)])
 def test_at_the_closing_penetration_of_an_incompressible_solid_the_contact_closes_at_the_least_load(
         rheology, zeta):

@@ -99,7 +99,6 @@ class ClosedContact:
         """The :class:`ContactResult` of full contact under ``control``."""
         shape = self.prep.shape
         x, rh, sig_h, _ = self.stress
-        n = len(x)
         c0 = self.prep.kernel.mean
         if control.is_load:
             pm = control.value
@@ -129,22 +128,18 @@ class ClosedContact:
                 message += closure.AT_CLOSING_PENETRATION
             else:
                 pm = closure.load_at(pen, rh[0].real, c0)
-        sig_h = sig_h.copy()
-        sig_h[0] = -pm
-        sigma = np.fft.irfft(sig_h * n, n)
-        r = shape.heights(x)
-        slopes = shape.profile.slopes(x)
-        mu = (float(np.mean(sigma * slopes) / pm)
-              if abs(pm) > 1e-12 * float(np.mean(np.abs(sigma))) else np.nan)
+        from .estimate import friction_scale
+
+        oscillating = self.stress[3]
+        sigma = oscillating - pm
+        loss = self.prep.kernel.multiplier(np.arange(1, len(sig_h), dtype=float)).imag
+        mu, found = closure.estimates(oscillating, shape.profile.slopes(x), loss,
+                                      shape.amplitude, pm,
+                                      lambda f: friction_scale(f, self.prep.m2))
         sqrt_m2 = np.sqrt(self.prep.m2)
         ok = bool(np.all(sigma <= self.strength + 1e-9))
-        # the power fed into the solid, 4π Σ_m |σ̂_m|² Im K(m) (the spectral form of
-        # :func:`~viscocontact.contact.fields.dissipated_friction`), as a friction coefficient
-        m = np.arange(1, len(sig_h), dtype=float)
-        power = 4 * np.pi * float(np.sum(np.abs(sig_h[1:]) ** 2
-                                         * self.prep.kernel.multiplier(m).imag))
-        common["extras"]["friction_dissipation"] = (
-            shape.amplitude * power / (2 * np.pi * pm) if np.isfinite(mu) else np.nan)
+        common["extras"].update(found)
+        r = shape.heights(x)
         fld = ({"x": x, "pressure": -sigma, "displacement": r - 1.0 + pen,
                 "gap": np.zeros_like(x)} if want_fields else None)
         return ContactResult(

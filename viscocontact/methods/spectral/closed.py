@@ -37,6 +37,7 @@ class ClosedContact:
     stress: np.ndarray          # σ̃_osc, zero mean, tensile positive
     heights: np.ndarray         # r̃
     mean_compliance: float      # c0
+    loss: np.ndarray            # Im K(m), m = 1 … n/2
 
     @classmethod
     def of(cls, shape, kernel, points: int = 0) -> "ClosedContact":
@@ -52,7 +53,8 @@ class ClosedContact:
         sig[1:] = -m[1:] * rh[1:] / np.asarray(kernel.multiplier(m[1:]))
         return cls(shape=shape, x=x, mean_height=float(rh[0].real),
                    stress=scipy.fft.irfft(sig * n, n), heights=r,
-                   mean_compliance=float(kernel.mean))
+                   mean_compliance=float(kernel.mean),
+                   loss=np.asarray(kernel.multiplier(m[1:])).imag)
 
     @property
     def closing_load(self) -> float:
@@ -70,9 +72,11 @@ class ClosedContact:
 
     def result(self, m2: float, common: dict, mean_pressure=None, penetration=None,
                fields: bool = False, message: str = "contact closed over the period",
-               strength: float = 0.0):
-        """The :class:`ContactResult` of the closed contact (as the BEM reports it); it fails
-        where it would carry more tension than ``strength``."""
+               strength: float = 0.0, friction_floor: float = 1e-2):
+        """The :class:`ContactResult` of the closed contact (as the BEM reports it, with the
+        dissipated power and the estimates of :func:`~viscocontact.contact.closure.estimates`,
+        μ's relative to ``max(|μ|, friction_floor·√m2)``); it fails where it would carry more
+        tension than ``strength``."""
         c0 = self.mean_compliance
         if mean_pressure is not None:
             pm = float(mean_pressure)
@@ -95,10 +99,13 @@ class ClosedContact:
                 message += closure.AT_CLOSING_PENETRATION
             else:
                 pm = self.load_at(pen)
+        from .estimate import friction_scale
+
         sigma = self.stress - pm
-        scale = float(np.mean(np.abs(sigma)))
-        slopes = self.shape.profile.slopes(self.x)
-        mu = float(np.mean(sigma * slopes) / pm) if abs(pm) > 1e-12 * scale else np.nan
+        mu, found = closure.estimates(self.stress, self.shape.profile.slopes(self.x), self.loss,
+                                      self.shape.amplitude, pm,
+                                      lambda f: friction_scale(f, m2, friction_floor))
+        common["extras"].update(found)
         ok = bool(np.all(sigma <= strength + 1e-9))
         fld = ({"x": self.x, "pressure": -sigma, "displacement": self.heights - 1.0 + pen,
                 "gap": np.zeros_like(self.x)} if fields else None)

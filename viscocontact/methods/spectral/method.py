@@ -239,7 +239,8 @@ class Spectral(SolutionMethod):
             extras["seconds"] = time.perf_counter() - started
             events.append("the closed contact carries the load without tension")
             return closed.result(prep.m2, common, load, pen, fields,
-                                 strength=0.0 if law is None else law.strength)
+                                 strength=0.0 if law is None else law.strength,
+                                 friction_floor=self.friction_floor)
         current, iterations, applications = Ladder(self, problem, prep, law, events,
                                                    extras).run(initial)
         result = contact_result(problem, prep, current, iterations=iterations,
