@@ -66,7 +66,8 @@ def measures(stress, slopes, loss, amplitude: float, mean_pressure: float):
     return mu, amplitude * power / (2 * np.pi * mean_pressure)
 
 
-def estimates(stress, slopes, loss, amplitude: float, mean_pressure: float, scale) -> dict:
+def estimates(stress, slopes, loss, amplitude: float, mean_pressure: float,
+              scale) -> tuple[float, dict]:
     """The closed contact's friction, dissipated power and their error estimates: the area is
     exact (2π); μ and the power change by what every other grid point gives (nothing, for a
     profile with fewer modes than a quarter of the points, but round-off: the floor

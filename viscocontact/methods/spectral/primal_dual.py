@@ -20,7 +20,8 @@ LOOSE_KRYLOV = 1e-2
 #: before the line search is switched on (three to six settle a set from a nearby start).
 LINE_SEARCH_SMALLEST = 1.0 / 1024
 UNDAMPED_STEPS = 10
-#: Consecutive active-set steps without descent after which the solve stops ("no descent").
+#: Consecutive active-set steps without descent after which the solve stops ("no descent": the
+#: step does not reduce |min(p, c g)| at LINE_SEARCH_SMALLEST of its length).
 #: Converging solves have isolated ones, after which the set changes and the merit falls again
 #: (at most two in a row on the grids that converged in the campaign's 115 adhesionless scenes
 #: of its first 300 seeds; stopping at the first broke seeds 4, 101 and 212); a stagnating solve
@@ -88,6 +89,21 @@ def _line_search(p, g, step_p, step_g, stiffness: float, floor: float) -> float 
             return s
         s *= 0.5
     return None
+
+
+def _fraction(p, g, step_p, step_g, stiffness: float, floor: float, search: bool,
+              stalled: int) -> tuple[float | None, int]:
+    """The fraction of an active-set step to take (1 unless ``search``: the line search) and
+    the count of steps in a row without descent (``stalled`` before this one); None once
+    :data:`STALLED_STEPS` are (an isolated one is taken at :data:`LINE_SEARCH_SMALLEST`: a new
+    set follows). A step whose Krylov solve fell short is searched too: taken whole, it can
+    load most of the grid (a standard linear solid with β of 2000-5000 near ζβ ~ 3: GMRES(60)
+    stagnated on 1844 active cells of 65536, and the next set had 61919)."""
+    s = _line_search(p, g, step_p, step_g, stiffness, floor) if search else 1.0
+    stalled = stalled + 1 if s is None else 0
+    if s is None and stalled < STALLED_STEPS:
+        s = LINE_SEARCH_SMALLEST
+    return s, stalled
 
 
 def _active_cells(p, g, heights, stiffness: float, first: bool,
@@ -204,9 +220,8 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     stiffness = 1.0 / circulant_diagonal(lam.real)     # pressure that a unit gap is worth
     singular_when_closed = not load and lam.flat[0] == 0
     p, delta, g = _active_start(apply, r, start, mean_pressure, penetration, start_penetration)
-    control = _StepControl(krylov_tolerance)
+    control, stalled = _StepControl(krylov_tolerance), 0     # (steps in a row without descent)
     floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
-    stalled = 0                           # consecutive steps without descent
     for it in range(1, max_iterations + 1):
         check_deadline()                  # the cooperative time limit (viscocontact.deadline)
         active = _active_cells(p, g, r, stiffness, it == 1, singular_when_closed)
@@ -215,22 +230,13 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         solved = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, r.size,
                                    control.loose, (control.tight, 0.5 * tolerance), restart)
         step_p, step_d, step_g = _update(solved, idx, p, g, delta, r, load)
-        # a step whose Krylov solve fell short is searched too: taken whole, it can load most
-        # of the grid (a standard linear solid with β of 2000-5000 near ζβ ~ 3: GMRES(60)
-        # stagnated on 1844 active cells of 65536, and the next set had 61919)
-        s = (_line_search(p, g, step_p, step_g, stiffness, floor)
-             if control.damped or solved[1] != 0 else 1.0)
-        stalled = stalled + 1 if s is None else 0
-        if s is None and stalled < STALLED_STEPS:
-            s = LINE_SEARCH_SMALLEST        # (an isolated one is followed by a new set)
+        s, stalled = _fraction(p, g, step_p, step_g, stiffness, floor,
+                               control.damped or solved[1] != 0, stalled)
         if s is None:
             p, g, res = _clipped(apply, p, r, delta, None)
             return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
                                 iterations=it, applications=apps[0], solver=ACTIVE_SET,
-                                message=f"no descent after {it} active-set steps: "
-                                        f"{STALLED_STEPS} steps in a row do not reduce "
-                                        f"|min(p, c g)| at {LINE_SEARCH_SMALLEST:g} of their "
-                                        "length")
+                                message=f"no descent after {it} active-set steps")
         p, g = p + s * step_p, g + s * step_g
         delta += s * step_d
         res = violation(g, p > 0)

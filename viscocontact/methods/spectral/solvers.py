@@ -22,7 +22,9 @@ circulant of :mod:`~viscocontact.methods.spectral.operator`.
   preconditioner through ``M 1``; loosely while the set changes, tightly once it does not
   (inexact Newton). After :data:`UNDAMPED_STEPS` steps, or a cycle of sets, the steps are
   damped by a line search on ``|min(p, c g)|²``: the plain update cycles on strongly
-  non-symmetric operators. Any ``A``: the viscoelastic operator is not symmetric.
+  non-symmetric operators (a step whose Krylov solve fell short is searched at once); after
+  :data:`~.primal_dual.STALLED_STEPS` steps in a row that are no descent direction the solve
+  stops, not converged. Any ``A``: the viscoelastic operator is not symmetric.
 * :func:`grid_solve` — the one a grid's operator needs.
 
 Both stop on the largest violation of the contact conditions, ``max(max_C |g|, max_{∉C} -g)``,
