@@ -98,7 +98,7 @@ class ClosedContact:
     def result(self, control: Control, message: str, want_fields: bool, common: dict):
         """The :class:`ContactResult` of full contact under ``control``."""
         shape = self.prep.shape
-        x, rh, sig_h, _ = self.stress
+        x, rh, sig_h, oscillating = self.stress
         c0 = self.prep.kernel.mean
         if control.is_load:
             pm = control.value
@@ -130,7 +130,6 @@ class ClosedContact:
                 pm = closure.load_at(pen, rh[0].real, c0)
         from .estimate import friction_scale
 
-        oscillating = self.stress[3]
         sigma = oscillating - pm
         loss = self.prep.kernel.multiplier(np.arange(1, len(sig_h), dtype=float)).imag
         mu, found = closure.estimates(oscillating, shape.profile.slopes(x), loss,
