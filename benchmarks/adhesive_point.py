@@ -7,6 +7,8 @@ The point (thesis §4.6 scene): ``SelfAffineProfile(hurst=0.8, scales=50, rms=0.
 ``StandardLinearSolid(beta=10)``, ``EnergyBalance(gamma=2.387e-7)``, p̃∞ = 0.1, ζ = 1e-2, the
 default mesh and the default solver of an adhesive scene (Broyden), from first touch.
 ``--crowded``: the crowded corner instead, ζ = 1e-6, p̃∞ = 0.6, seeds 0-2 by default.
+``--elastic``: the same point on ``Elastic()`` (the relaxed solid, whose half-plane kernel is the
+Clausen function alone).
 
 The yardstick is ``numpy.linalg.solve`` of a 2000 × 2000 dense system with one BLAS thread,
 measured in the same run so that the ratio does not depend on the machine's load: the median of
@@ -67,18 +69,18 @@ def warm_up() -> float:
     return time.perf_counter() - t
 
 
-def problem(seed: int, crowded: bool, solver=None):
+def problem(seed: int, crowded: bool, solver=None, elastic: bool = False):
     from viscocontact.adhesion import EnergyBalance
     from viscocontact.problem import ContactProblem
     from viscocontact.methods.bem import BEM
     from viscocontact.profiles import SelfAffineProfile
-    from viscocontact.rheology import StandardLinearSolid
+    from viscocontact.rheology import Elastic, StandardLinearSolid
     from viscocontact.solvers import Broyden
 
     zeta, load = (1e-6, 0.6) if crowded else (1e-2, 0.1)
     return ContactProblem(method=BEM(),
                           profile=SelfAffineProfile(hurst=0.8, scales=50, rms=0.01, seed=seed),
-                          rheology=StandardLinearSolid(beta=10.0),
+                          rheology=Elastic() if elastic else StandardLinearSolid(beta=10.0),
                           adhesion=EnergyBalance(gamma=2.387e-7), solver=solver or Broyden(),
                           mean_pressure=load, zeta=zeta)
 
@@ -88,6 +90,7 @@ def main(argv=None) -> None:
     ap.add_argument("--seeds", default=None, help="comma-separated (default 11,12,13; 0,1,2 "
                                                   "with --crowded)")
     ap.add_argument("--crowded", action="store_true", help="ζ = 1e-6, p̃∞ = 0.6")
+    ap.add_argument("--elastic", action="store_true", help="on the relaxed elastic solid")
     ap.add_argument("--solver", default="broyden", choices=("broyden", "newton"))
     ap.add_argument("--profile", default=None, help="write cProfile statistics of the first seed")
     ap.add_argument("--cold", action="store_true",
@@ -115,7 +118,7 @@ def main(argv=None) -> None:
     times: list[float] = []
     ratios: list[float] = []
     for seed in seeds:
-        prob = problem(seed, args.crowded, solver)
+        prob = problem(seed, args.crowded, solver, args.elastic)
         if args.profile:
             import cProfile
 

@@ -218,7 +218,9 @@ def test_a_motion_step_without_a_field_on_its_zones_is_evaluated_on_new_ones():
 # campaign seed 234 (drawn values): the Maugis-Dugdale zone iteration meets zones whose
 # diagonal says "past the minimum of K̃" within a tenth of their root (19 times in this solve),
 # and shortened them away from it; the solve ran past 45 s at 41380a7. With Newton's step taken
-# there it converges in about 20 s
+# there it converges in about 20 s. On other machines' round-off its first contact's motion
+# meets a zone with no root short of its neighbour, which cycled for 60 iterations (no field:
+# the motion's steps fell to 1e-15, past 300 s); that neck now fills, and it converges in 25 s
 LONG_ROUGH_MD_ZONES = {
     "profile": {"kind": "self-affine", "hurst": 0.6711639498056313, "scales": 67,
                 "rms": 0.0037513202871212294, "seed": 6901},

@@ -348,7 +348,9 @@ def zone_fields(base: FieldSolution, kernel, *, stress: float, control: dict,
     together, if it is ``admissible``: the neck is then held by the cohesive traction alone,
     and its two edges are left with the stress intensity they have (their residual,
     :class:`~viscocontact.adhesion.MaugisDugdale`). Otherwise these edges have no zones
-    (:class:`ZoneError`). Zones filled at the start (``full``) stay filled while admissible.
+    (:class:`ZoneError`). A zone found past the minimum of its equation with its edge still
+    tensile, twice, has no root short of the facing zone either: its neck fills too, if
+    admissible. Zones filled at the start (``full``) stay filled while admissible.
     """
     return _ZoneNewton(base, kernel, stress=stress, control=control, admissible=admissible,
                        tip=tip).solve(start, full)
@@ -427,7 +429,8 @@ class _ZoneNewton:
             if np.any(wrong) and self._fill_unscreened(idx, wrong):
                 continue
             if np.any(beyond):
-                self._shrink(idx, beyond)
+                if not self._fill_rootless(idx, beyond):
+                    self._shrink(idx, beyond)
                 continue
             if self._advance(idx, step):
                 return self.finished(self.fields)
@@ -443,6 +446,7 @@ class _ZoneNewton:
         full = full & full[self.facing]
         self.screened = np.zeros(n, bool)        # zones that have made their edge's K̃ negative
         self.tested = np.zeros(n, bool)          # necks tried filled (once each)
+        self.passed = np.zeros(n, int)           # times found past their minimum, still tensile
         if np.any(full):
             t = self.fill(t, full)
             if not self.allowed(self.evaluate(t)[0], full):
@@ -560,6 +564,30 @@ class _ZoneNewton:
             self._filled(neck, trial, f_try, k_try)
             return True
         return False
+
+    def _fill_rootless(self, idx: np.ndarray, beyond: np.ndarray) -> bool:
+        """Fill the necks of zones found past the minimum of their equation with their edge
+        still tensile (``K̃ > 0``) for the second time, if admissible; whether any was filled.
+
+        Shortened from there (:meth:`_shrink`), such a zone grows back past its minimum: the
+        iteration cycles. ``K̃`` does not reach zero before the minimum, so the zone has no
+        root short of the facing zone: it runs across the neck, which the cohesive traction
+        then holds (a seed-234 scene of the campaign: a zone of 0.03 in a neck of 0.08 with
+        ``K̃ = 0.008`` at its minimum, cycling for 60 iterations)."""
+        past = np.zeros(self.n, bool)
+        past[idx[beyond]] = True
+        past &= (self.k > 0.0) & ~self.full
+        self.passed += past
+        rootless = past & (self.passed >= 2)
+        if not np.any(rootless):
+            return False
+        neck = rootless | rootless[self.facing]
+        trial = self.fill(self.t, self.full | neck)
+        f_try, k_try = self.evaluate(trial)
+        if not self.allowed(f_try, neck):
+            return False
+        self._filled(neck, trial, f_try, k_try)
+        return True
 
     def _filled(self, necks: np.ndarray, t: np.ndarray, fields: FieldSolution,
                 k: np.ndarray) -> None:

@@ -15,7 +15,8 @@ with ``H_i`` the branch interpolants (:meth:`MemoryTable.antiderivative`) and ``
 correction re-expanded exactly (to rounding), ``K`` the instantaneous compliance and
 ``-Cl2(x) = -S(x) + x log|x|``, ``S(x) = x + x³ P(x²)`` the smooth part of the Clausen series
 (:func:`~viscocontact.kernels.clausen.cl2_smooth`). ``S`` is the only piece that is interpolated (cubic
-Hermite with exact slopes on intervals of at most 2e-3: error below 1e-14); the singular
+Hermite with exact slopes on intervals of at most 2e-3, :data:`LONGEST_INTERVAL`: error below
+1e-14); the singular
 ``x log|x|`` stays in closed form. ``E`` (even, free of the Clausen part) has a second set of
 coefficients on the same intervals, so :meth:`KernelTable.pair` finds the interval once for
 both. A look-up is one :func:`numpy.interp` of the node indices (as in
@@ -28,6 +29,28 @@ import numpy as np
 from .clausen import TWO_PI, cl2_smooth, wrap
 
 _TINY = np.finfo(float).tiny
+#: Longest interval of a table's grid: the smooth part ``S`` of the Clausen function is
+#: interpolated by cubic Hermite polynomials with exact slopes, whose error
+#: ``h⁴·max|S⁽⁴⁾|/384`` is below 1e-14 on intervals this short. The memory tables' grids meet it
+#: already (a node every 2e-3 at most away from 0, 1.5e-3 for the layer correction); an elastic
+#: half-plane's grid is made of it alone.
+LONGEST_INTERVAL = 2e-3
+
+
+def _refined(nodes):
+    """``nodes`` (symmetric about 0, with 0 a node) with every interval longer than
+    :data:`LONGEST_INTERVAL` split into equal parts, built on the positive half and mirrored so
+    that the grid stays exactly symmetric; a grid that meets the bound is returned as it is."""
+    if np.max(np.diff(nodes)) <= LONGEST_INTERVAL:
+        return nodes
+    positive = nodes[nodes >= 0.0]
+    parts = [positive[:1]]
+    for lo, hi in zip(positive[:-1], positive[1:]):
+        inner = np.linspace(lo, hi, max(1, int(np.ceil((hi - lo) / LONGEST_INTERVAL))) + 1)[1:]
+        inner[-1] = hi
+        parts.append(inner)
+    positive = np.concatenate(parts)
+    return np.concatenate([-positive[:0:-1], positive])
 
 
 def _buckets(nodes, per_node: float = 4.0):
@@ -125,7 +148,7 @@ class KernelTable:
             parts += [xc[xc <= np.pi], xc[xc >= np.pi] - TWO_PI]
         y = np.unique(np.concatenate(parts))
         y = np.unique(np.concatenate([y, -y]))
-        y = y[(y >= -np.pi) & (y <= np.pi)]
+        y = _refined(y[(y >= -np.pi) & (y <= np.pi)])
         lo, width = y[:-1], np.diff(y)
         odd = [np.zeros(len(lo)) for _ in range(4)]
         even = [np.zeros(len(lo)) for _ in range(4)]

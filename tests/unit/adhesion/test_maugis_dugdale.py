@@ -308,3 +308,51 @@ def test_which_models_have_singular_edges():
     assert not MaugisDugdale(gamma=1e-6, range=1e-3).singular_edges(0.1)
     assert not LennardJones(gamma=1e-6, range=1e-3).singular_edges(0.1)
     assert not NoAdhesion().singular_edges(0.1)
+
+
+# two contacts of campaign seed 234's rough profile (SLS β = 166, ζ = 6.3e-3, half-plane) met by
+# the first contact's motion at Δ̃ = 9.66e-4; the neck between them is 0.082 wide
+ROOTLESS_SCENE = {
+    "profile": {"kind": "self-affine", "hurst": 0.6711639498056313, "scales": 67,
+                "rms": 0.0037513202871212294, "seed": 6901},
+    "rheology": {"kind": "standard-linear-solid", "beta": 165.66798150699552},
+    "kernel": {"kind": "half-plane"},
+    "adhesion": {"kind": "maugis-dugdale", "gamma": 1.4338037268639676e-06,
+                 "range": 0.00027613673321702807},
+    "load": {"penetration": 0.000965986110799566}, "sliding": {"zeta": 0.006266912031851358},
+    "solver": {"kind": "broyden"}}
+ROOTLESS_EDGES = np.array([5.64509216, 5.74881304, 5.8308437, 6.02948573])
+
+
+@pytest.mark.parametrize("start", [None, [0.01714, 0.01117, 0.02266, 0.0104]])
+def test_a_zone_without_a_root_short_of_its_neighbour_fills_the_neck(start):
+    """The zone at the right contact's left edge passes the minimum of its equation with its
+    edge still tensile (K̃ = 0.008 at d = 0.03): it has no root short of the facing zone.
+    Shortened, it grew back past the minimum, and the iteration cycled until it gave up (the
+    motion then met no field and its steps shrank to 1e-15). Now the neck fills: from short
+    zones and from the zones of the motion's last state alike, the two zones tile the neck and
+    the outer zones keep their roots."""
+    import viscocontact as vc
+    from viscocontact.methods.bem import BEM
+    from viscocontact.methods.bem.method import Solve
+    from viscocontact.methods.bem.sets import Control
+    from viscocontact.problem import ContactProblem
+
+    problem = ContactProblem.from_scene(vc.Scene.from_dict(ROOTLESS_SCENE), method=BEM())
+    solve = Solve(problem, problem.prepare())
+    system = solve.equilibrium.system(Control.penetration_of(0.000965986110799566),
+                                      ROOTLESS_EDGES)
+    if start is not None:
+        from types import SimpleNamespace
+
+        previous = SimpleNamespace(loads=SimpleNamespace(width=np.array(start),
+                                                         stress=np.zeros(4)),
+                                   mesh=SimpleNamespace(edges=ROOTLESS_EDGES))
+        system._previous = previous
+    system.shared = None
+    fields, _, r = system.evaluate(ROOTLESS_EDGES)
+    d = fields.loads.width
+    neck = ROOTLESS_EDGES[2] - ROOTLESS_EDGES[1]
+    assert np.all(np.isfinite(r))
+    assert d[1] + d[2] == pytest.approx(neck, rel=1e-6)
+    assert 0.0 < d[0] < 0.05 and 0.0 < d[3] < 0.05

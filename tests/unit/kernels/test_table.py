@@ -55,9 +55,6 @@ def test_table_equals_the_sum_of_its_pieces(kernel, zeta):
        kernel=st.sampled_from(KERNELS), seed=st.integers(0, 2**16))
 def test_table_equals_the_sum_of_its_pieces_for_any_prony_series(rheology, zeta, kernel, seed):
     pk = kernel.prepare(rheology, zeta)
-    if pk.table is None:            # every branch relaxed or frozen on a half-plane: Clausen only
-        assert isinstance(kernel, HalfPlane) and len(pk.weights) == 0
-        return
     _assert_matches_terms(pk, _points(np.random.default_rng(seed)))
 
 
@@ -74,11 +71,16 @@ def test_a_multi_branch_table_holds_every_branch_grid():
     _assert_matches_terms(pk, _points(np.random.default_rng(3)))
 
 
-def test_elastic_half_plane_keeps_the_closed_form():
+def test_an_elastic_half_plane_tabulates_the_clausen_function():
+    """Its grid is the uniform one of the smooth part's bound alone (no memory, no layer), and
+    the table gives the closed form to rounding."""
+    from viscocontact.kernels.table import LONGEST_INTERVAL
+
     pk = HalfPlane().prepare(Elastic(), 0.0)
-    assert pk.table is None
-    x = _points(np.random.default_rng(1))
-    assert np.array_equal(pk.antiderivative(x), pk.antiderivative_terms(x))
+    nodes = pk.table.nodes
+    assert len(pk.weights) == 0 and np.max(np.diff(nodes)) <= LONGEST_INTERVAL
+    assert np.array_equal(nodes, -nodes[::-1]) and 0.0 in nodes
+    _assert_matches_terms(pk, _points(np.random.default_rng(1)))
 
 
 def test_an_elastic_layer_tabulates_its_correction():
@@ -164,8 +166,6 @@ def test_the_compiled_loop_gives_the_integrals_of_the_pieces(rheology, zeta, ker
     element ends, the midpoints and anywhere in two periods: to 1e-13 of the kernel's scale,
     as the table's look-ups."""
     pk = kernel.prepare(rheology, zeta)
-    if pk.table is None:
-        return
     rng = np.random.default_rng(seed)
     a, b = _contacts(rng, contacts, elements)
     xi = np.concatenate([0.5 * (a + b), a[::2], rng.uniform(-2 * np.pi, 2 * np.pi, 7)])
@@ -222,8 +222,6 @@ def test_the_compiled_slopes_are_the_slopes_of_the_pieces(rheology, zeta, kernel
     from viscocontact.kernels.prepared import pairwise
 
     pk = kernel.prepare(rheology, zeta)
-    if pk.table is None:
-        return
     rng = np.random.default_rng(seed)
     a, b = _contacts(rng, contacts, elements)
     nodes = np.unique(np.concatenate([a, b]))
