@@ -232,6 +232,7 @@ LONG_ROUGH_MD_ZONES = {
     "solver": {"kind": "broyden"}}
 
 
+@pytest.mark.slow     # 70 s with auto's grid finish; the zones' mechanisms have unit tests
 def test_zones_at_a_root_past_the_minimum_stay_there():
     _converges(LONG_ROUGH_MD_ZONES)
 
