@@ -16,8 +16,8 @@ import pytest
 
 from viscocontact.testing.campaign import describe, draw, run_scene
 
-# A limit far past these scenes' times (under 7 s with their checks), so that a scene that runs away fails
-# instead of holding the suite.
+# A limit far past these scenes' times (under 7 s with their checks), so that a scene that
+# runs away fails instead of holding the suite.
 LIMIT = 60.0
 
 SEEDS = [
