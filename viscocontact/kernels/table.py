@@ -14,12 +14,11 @@ cubic on the union of their break points. So on the union grid ``y`` (made symme
 with ``H_i`` the branch interpolants (:meth:`MemoryTable.antiderivative`) and ``C`` the layer
 correction re-expanded exactly (to rounding), ``K`` the instantaneous compliance and
 ``-Cl2(x) = -S(x) + x log|x|``, ``S(x) = x + x³ P(x²)`` the smooth part of the Clausen series
-(:func:`~viscocontact.kernels.clausen.cl2_smooth`). ``S`` is the only piece that is interpolated (cubic
-Hermite with exact slopes on intervals of at most 2e-3, :data:`LONGEST_INTERVAL`: error below
-1e-14); the singular
-``x log|x|`` stays in closed form. ``E`` (even, free of the Clausen part) has a second set of
-coefficients on the same intervals, so :meth:`KernelTable.pair` finds the interval once for
-both. A look-up is one :func:`numpy.interp` of the node indices (as in
+(:func:`~viscocontact.kernels.clausen.cl2_smooth`). ``S`` is the only piece that is interpolated
+(cubic Hermite with exact slopes on intervals of at most 2e-3, :data:`LONGEST_INTERVAL`: error
+below 1e-14); the singular ``x log|x|`` stays in closed form. ``E`` (even, free of the Clausen
+part) has a second set of coefficients on the same intervals, so :meth:`KernelTable.pair` finds
+the interval once for both. A look-up is one :func:`numpy.interp` of the node indices (as in
 :meth:`MemoryTable.antiderivative`) and a Horner evaluation per function.
 """
 from __future__ import annotations
