@@ -8,7 +8,14 @@ pass counts and the median and largest time per scene by adhesion model, rheolog
 control and solver.
 
     PYTHONPATH=. python benchmarks/campaign.py --scenes 300 --time-limit 30
+    PYTHONPATH=. python benchmarks/campaign.py --scenes 300 --dense-solves 450
     PYTHONPATH=. python benchmarks/campaign.py --table      # the table of an existing file
+
+``--dense-solves N`` sets the limit to ``N`` times one ``numpy.linalg.solve`` of a 2000 × 2000
+system on one BLAS thread, measured before the run (``adhesive_point.py``'s yardstick): the same
+scenes then meet the same limit on a slower machine. 450 is the 45 s of the tables in
+``docs/verification.md`` on the machine where the yardstick took about 0.10 s; on one where it
+took 0.143 s, a 45 s limit lost 10 scenes of 18-43 s (258 instead of 270 of 300).
 """
 from __future__ import annotations
 
@@ -184,6 +191,9 @@ def main(argv=None) -> int:
     ap.add_argument("--first-seed", type=int, default=0)
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--time-limit", type=float, default=30.0, help="seconds per scene")
+    ap.add_argument("--dense-solves", type=float, default=None,
+                    help="the limit in units of a 2000 x 2000 dense solve measured before the "
+                         "run (instead of --time-limit)")
     ap.add_argument("--grace", type=float, default=60.0,
                     help="seconds past the limit before a worker is killed")
     ap.add_argument("--out", type=Path, default=DEFAULT_OUT)
@@ -198,6 +208,14 @@ def main(argv=None) -> int:
     for var in ("NUMBA_NUM_THREADS", "VISCOCONTACT_THREADS"):
         os.environ.setdefault(var, "1")
     threadpool_limits(limits=1)
+    if args.dense_solves is not None:
+        sys.path.insert(0, str(Path(__file__).resolve().parent))
+        from adhesive_point import dense_solve_seconds
+
+        unit = dense_solve_seconds()
+        args.time_limit = args.dense_solves * unit
+        print(f"limit {args.dense_solves:g} dense solves of {unit:.3f} s: "
+              f"{args.time_limit:.1f} s a scene", flush=True)
     _warm_up()
     t0 = time.monotonic()
     seeds = range(args.first_seed, args.first_seed + args.scenes)

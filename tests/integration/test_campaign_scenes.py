@@ -101,6 +101,7 @@ def test_confined_rough_maugis_dugdale():
     _passes(CONFINED_ROUGH_MD, limit=150.0)
 
 
+@pytest.mark.slow     # 19 s on a two-core machine whose dense 2000² solve takes 0.14 s
 def test_wavy_energy_balance_penetration_nonlinear_cg():
     """Nonlinear CG on the wavy energy-balance contact in penetration control: the former
     approach rules stopped its edge solve at the budget of 80 residual evaluations; the
@@ -127,6 +128,7 @@ GLASSY_FREE_LAYER_SPLITS = {
     "solver": {"kind": "broyden"}}
 
 
+@pytest.mark.slow     # 20 s on a two-core machine whose dense 2000² solve takes 0.14 s
 def test_a_split_that_cycles_in_the_motion_refines_the_contact():
     """A contact whose tension and split alternate in the edges' motion is refined there, as
     in the equilibrium solve, and the motion ends on one contact: the equilibrium that 256
@@ -185,6 +187,7 @@ SPREADING_ROUGH_EB = {
     "solver": {"kind": "nonlinear-cg"}}
 
 
+@pytest.mark.slow     # 33 s on a two-core machine whose dense 2000² solve takes 0.14 s
 def test_the_motion_does_not_close_a_gap_that_the_penetration_keeps_open():
     outcome = run_scene(SPREADING_ROUGH_EB, time_limit=LIMIT)
     assert "full contact" not in outcome.message
