@@ -310,17 +310,9 @@ def test_which_models_have_singular_edges():
     assert not NoAdhesion().singular_edges(0.1)
 
 
-# two contacts of campaign seed 234's rough profile (SLS β = 166, ζ = 6.3e-3, half-plane) met by
-# the first contact's motion at Δ̃ = 9.66e-4; the neck between them is 0.082 wide
-ROOTLESS_SCENE = {
-    "profile": {"kind": "self-affine", "hurst": 0.6711639498056313, "scales": 67,
-                "rms": 0.0037513202871212294, "seed": 6901},
-    "rheology": {"kind": "standard-linear-solid", "beta": 165.66798150699552},
-    "kernel": {"kind": "half-plane"},
-    "adhesion": {"kind": "maugis-dugdale", "gamma": 1.4338037268639676e-06,
-                 "range": 0.00027613673321702807},
-    "load": {"penetration": 0.000965986110799566}, "sliding": {"zeta": 0.006266912031851358},
-    "solver": {"kind": "broyden"}}
+# two contacts of campaign seed 234's scene (rough, SLS β = 166, ζ = 6.3e-3, half-plane) that its
+# first contact's motion met at Δ̃ = 9.66e-4; the neck between them is 0.082 wide
+ROOTLESS_DEPTH = 0.000965986110799566
 ROOTLESS_EDGES = np.array([5.64509216, 5.74881304, 5.8308437, 6.02948573])
 
 
@@ -337,11 +329,12 @@ def test_a_zone_without_a_root_short_of_its_neighbour_fills_the_neck(start):
     from viscocontact.methods.bem.method import Solve
     from viscocontact.methods.bem.sets import Control
     from viscocontact.problem import ContactProblem
+    from viscocontact.testing.campaign import draw
 
-    problem = ContactProblem.from_scene(vc.Scene.from_dict(ROOTLESS_SCENE), method=BEM())
+    scene = {**draw(234), "load": {"penetration": ROOTLESS_DEPTH}}
+    problem = ContactProblem.from_scene(vc.Scene.from_dict(scene), method=BEM())
     solve = Solve(problem, problem.prepare())
-    system = solve.equilibrium.system(Control.penetration_of(0.000965986110799566),
-                                      ROOTLESS_EDGES)
+    system = solve.equilibrium.system(Control.penetration_of(ROOTLESS_DEPTH), ROOTLESS_EDGES)
     if start is not None:
         from types import SimpleNamespace
 
