@@ -191,6 +191,20 @@ def zone_patterns(edges: np.ndarray, spec: MeshSpec, counts=None) -> tuple:
     return tuple(out)
 
 
+def squeezed(zones: tuple, edges: np.ndarray) -> bool:
+    """Whether a contact of ``edges`` has shrunk to less than half the width that its zone of
+    ``zones`` (:func:`zone_patterns`) fits unscaled: :func:`graded_nodes` then compresses the
+    zone's nodes more than twice, so that its equal elements are no longer those of the edge
+    advance or of the calibration. A zone made for a contact fits it unscaled down to half its
+    width at least (the junction lies within ``ZONE_REACH / 2`` of the half-width); a contact
+    that shrinks by orders of magnitude on fixed zones (a contact that detaches) has residuals
+    of round-off, hundreds of times the work of adhesion where it is a millionth as wide."""
+    edges = np.asarray(edges, dtype=float)
+    width = edges[1::2] - edges[0::2]          # twice the half-width: half the zone's fit
+    return any(zone is not False and zone[0][-1] > ZONE_REACH * w
+               for zone, w in zip(zones, width))
+
+
 def same_zones(first, second) -> bool:
     """Whether two :func:`zone_patterns` results are equal (node for node)."""
     if len(first) != len(second):

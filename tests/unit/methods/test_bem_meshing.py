@@ -56,3 +56,19 @@ def test_a_solve_from_crossed_edges_repairs_them():
     r = vc.solve(scene, initial=crossed)
     assert r.converged, r.message
     assert "1 contact(s) detached" in r.extras["events"]
+
+
+def test_zones_are_squeezed_below_half_the_contact_they_were_made_for():
+    """A zone made for a contact fits it unscaled down to half its width (its junction lies
+    within ``ZONE_REACH / 2`` of the half-width); below that :func:`graded_nodes` compresses
+    it, and :func:`squeezed` says so, for the contact that shrank and not its neighbour."""
+    from viscocontact.contact.mesh import squeezed, zone_patterns
+
+    spec = mesh_spec(DISC, HalfPlane().prepare(SLS, 1e-2), EnergyBalance(gamma=1e-6))
+    made = np.array([-0.5, -0.2, 0.3, 0.9])          # half-widths 0.15 and 0.3
+    zones = zone_patterns(made, spec)
+    assert all(zone is not False for zone in zones)
+    assert not squeezed(zones, made)
+    assert not squeezed(zones, np.array([-0.5, -0.35, 0.45, 0.75]))    # both at half
+    assert squeezed(zones, np.array([-0.5, -0.2, 0.55, 0.65]))         # the second at 1/6
+    assert squeezed(zones, np.array([-0.36, -0.34, 0.3, 0.9]))         # the first at 1/15

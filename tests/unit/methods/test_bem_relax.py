@@ -122,3 +122,40 @@ def test_a_contact_at_rest_that_carries_tension_splits_and_moves_on(penetration,
     assert [r["kind"] for r in moved.extras["path_events"]] == ["split"]
     assert any("split where it carried tension" in e for e in moved.extras["events"])
     assert moved.area == pytest.approx(problem.solve().area, rel=1e-7)
+
+
+def test_a_first_contact_that_shrinks_away_detaches():
+    """Campaign seed 150 (sinusoid, SLS β = 9483 on a free layer, ζ = 2e-4, weak adhesion):
+    the first contact shrinks from 0.09 wide to nothing. On the zones made for its first
+    width, a contact thousands of times narrower had residuals of round-off (hundreds of times
+    the work of adhesion, of either sign) and the motion wandered for 2000 steps; with its zones
+    remade each time it halves, and detached once narrower than the mesh resolves, the motion
+    ends: no contact holds at first touch."""
+    from viscocontact.methods.bem.method import Solve
+    from viscocontact.methods.bem.sets import Control, first_touch
+    from viscocontact.methods.bem.state import Outcome
+    from viscocontact.testing.campaign import draw
+
+    p = ContactProblem.from_scene(vc.Scene.from_dict(draw(150)))
+    solve = Solve(p, p.prepare())
+    d0, edges = first_touch(solve.prep.shape)
+    touch = Control.penetration_of(d0)
+    out = Relaxation(solve.equilibrium, solve.closed).run(
+        solve.approach.with_field(edges, touch), touch, final=False, births=False)
+    assert out.outcome is Outcome.NO_CONTACT, out.message
+    assert solve.log.events[-1] == "the edges' motion detached every contact"
+
+
+def test_a_contact_narrower_than_the_mesh_resolves_detaches_while_it_narrows():
+    """Below :data:`SMALLEST_RESOLVED` a narrowing contact is collapsed (and detached by the
+    repair); one that widens there (just born) and wider ones are kept."""
+    from viscocontact.methods.bem.meshing import SMALLEST_RESOLVED
+    from viscocontact.methods.bem.relax import _vanishing
+
+    w = SMALLEST_RESOLVED
+    before = np.array([0.0, 0.8 * w, 1.0, 1.0 + 0.5 * w, 2.0, 2.0 + 3 * w])
+    after = np.array([0.0, 0.9 * w, 1.0, 1.0 + 0.4 * w, 2.0, 2.0 + 2 * w])
+    out = _vanishing(before, after)
+    assert out[0:2].tolist() == after[0:2].tolist()              # widening: kept
+    assert out[2] == out[3] == pytest.approx(1.0 + 0.2 * w)      # narrowing below: collapsed
+    assert out[4:6].tolist() == after[4:6].tolist()              # above the floor: kept
