@@ -567,7 +567,8 @@ class _ZoneNewton:
 
     def _fill_rootless(self, idx: np.ndarray, beyond: np.ndarray) -> bool:
         """Fill the necks of zones found past the minimum of their equation with their edge
-        still tensile (``K̃ > 0``) for the second time, if admissible; whether any was filled.
+        still tensile (``K̃ > 0``) for the second time; whether any was filled (a
+        :class:`ZoneError` where such a neck is not admissible: no field).
 
         Shortened from there (:meth:`_shrink`), such a zone grows back past its minimum: the
         iteration cycles. ``K̃`` does not reach zero before the minimum, so the zone has no
@@ -585,7 +586,10 @@ class _ZoneNewton:
         trial = self.fill(self.t, self.full | neck)
         f_try, k_try = self.evaluate(trial)
         if not self.allowed(f_try, neck):
-            return False
+            # nor can the traction hold the neck: these edges have no field (shortened and
+            # regrown, the zone cycled to the iterations' end: campaign seed 29, one contact
+            # past a fold under load control, its neck across the period)
+            raise ZoneError(_MEET)
         self._filled(neck, trial, f_try, k_try)
         return True
 

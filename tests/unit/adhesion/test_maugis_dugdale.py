@@ -349,3 +349,24 @@ def test_a_zone_without_a_root_short_of_its_neighbour_fills_the_neck(start):
     assert np.all(np.isfinite(r))
     assert d[1] + d[2] == pytest.approx(neck, rel=1e-6)
     assert 0.0 < d[0] < 0.05 and 0.0 < d[3] < 0.05
+
+
+def test_a_zone_without_a_root_whose_neck_cannot_fill_has_no_field():
+    """Campaign seed 29 (sinusoid, Prony, free layer, load control) just past a fold at
+    p̃∞ = -0.184: the left zone of its one contact passes the minimum of its equation with its
+    edge tensile, and its neck (across the period, almost the whole period wide) cannot fill.
+    Shortened and regrown, it cycled until the 60 iterations ran out; now the edges have no
+    field at once, for the reason that the zones meet where the traction cannot hold."""
+    import viscocontact as vc
+    from viscocontact.methods.bem import BEM
+    from viscocontact.methods.bem.method import Solve
+    from viscocontact.methods.bem.sets import Control
+    from viscocontact.problem import ContactProblem
+    from viscocontact.testing.campaign import draw
+
+    problem = ContactProblem.from_scene(vc.Scene.from_dict(draw(29)), method=BEM())
+    solve = Solve(problem, problem.prepare())
+    r = solve.equilibrium.residual_at(np.array([-0.04139057, 0.00658234]),
+                                      Control.load_of(-0.18407468975388852))
+    assert not np.any(np.isfinite(r))
+    assert "cannot fill the neck" in solve.equilibrium.limitation
