@@ -15,7 +15,7 @@ control and solver.
 system on one BLAS thread, measured before the run (``adhesive_point.py``'s yardstick): the same
 scenes then meet the same limit on a slower machine. 450 is the 45 s of the tables in
 ``docs/verification.md`` on the machine where the yardstick took about 0.10 s; on one where it
-took 0.143 s, a 45 s limit lost 10 scenes of 18-43 s (258 instead of 270 of 300).
+took 0.143 s, a 45 s limit lost scenes of 8-43 s there (the page gives the counts).
 """
 from __future__ import annotations
 

@@ -192,15 +192,15 @@ def zone_patterns(edges: np.ndarray, spec: MeshSpec, counts=None) -> tuple:
 
 
 def squeezed(zones: tuple, edges: np.ndarray) -> bool:
-    """Whether a contact of ``edges`` has shrunk to less than half the width that its zone of
-    ``zones`` (:func:`zone_patterns`) fits unscaled: :func:`graded_nodes` then compresses the
-    zone's nodes more than twice, so that its equal elements are no longer those of the edge
-    advance or of the calibration. A zone made for a contact fits it unscaled down to half its
-    width at least (the junction lies within ``ZONE_REACH / 2`` of the half-width); a contact
-    that shrinks by orders of magnitude on fixed zones (a contact that detaches) has residuals
-    of round-off, hundreds of times the work of adhesion where it is a millionth as wide."""
+    """Whether a contact of ``edges`` has shrunk so far that :func:`graded_nodes` compresses
+    its zone of ``zones`` (:func:`zone_patterns`) more than twice, so that the zone's equal
+    elements are no longer those of the edge advance or of the calibration. A zone reaches at
+    most ``ZONE_REACH`` of its contact's half-width (about 0.21 of it on the default mesh, which
+    then fits unscaled down to about half its width); a contact that shrinks by orders of
+    magnitude on fixed zones (a contact that detaches) has residuals of round-off, hundreds of
+    times the work of adhesion where it is a millionth as wide."""
     edges = np.asarray(edges, dtype=float)
-    width = edges[1::2] - edges[0::2]          # twice the half-width: half the zone's fit
+    width = edges[1::2] - edges[0::2]          # (ZONE_REACH of twice the half-width)
     return any(zone is not False and zone[0][-1] > ZONE_REACH * w
                for zone, w in zip(zones, width))
 

@@ -316,6 +316,17 @@ ROOTLESS_DEPTH = 0.000965986110799566
 ROOTLESS_EDGES = np.array([5.64509216, 5.74881304, 5.8308437, 6.02948573])
 
 
+def _campaign_solve(table):
+    """The BEM solve's parts for the campaign scene ``table``."""
+    import viscocontact as vc
+    from viscocontact.methods.bem import BEM
+    from viscocontact.methods.bem.method import Solve
+    from viscocontact.problem import ContactProblem
+
+    problem = ContactProblem.from_scene(vc.Scene.from_dict(table), method=BEM())
+    return Solve(problem, problem.prepare())
+
+
 @pytest.mark.parametrize("start", [None, [0.01714, 0.01117, 0.02266, 0.0104]])
 def test_a_zone_without_a_root_short_of_its_neighbour_fills_the_neck(start):
     """The zone at the right contact's left edge passes the minimum of its equation with its
@@ -324,16 +335,10 @@ def test_a_zone_without_a_root_short_of_its_neighbour_fills_the_neck(start):
     motion then met no field and its steps shrank to 1e-15). Now the neck fills: from short
     zones and from the zones of the motion's last state alike, the two zones tile the neck and
     the outer zones keep their roots."""
-    import viscocontact as vc
-    from viscocontact.methods.bem import BEM
-    from viscocontact.methods.bem.method import Solve
     from viscocontact.methods.bem.sets import Control
-    from viscocontact.problem import ContactProblem
     from viscocontact.testing.campaign import draw
 
-    scene = {**draw(234), "load": {"penetration": ROOTLESS_DEPTH}}
-    problem = ContactProblem.from_scene(vc.Scene.from_dict(scene), method=BEM())
-    solve = Solve(problem, problem.prepare())
+    solve = _campaign_solve({**draw(234), "load": {"penetration": ROOTLESS_DEPTH}})
     system = solve.equilibrium.system(Control.penetration_of(ROOTLESS_DEPTH), ROOTLESS_EDGES)
     if start is not None:
         from types import SimpleNamespace
@@ -357,15 +362,10 @@ def test_a_zone_without_a_root_whose_neck_cannot_fill_has_no_field():
     edge tensile, and its neck (across the period, almost the whole period wide) cannot fill.
     Shortened and regrown, it cycled until the 60 iterations ran out; now the edges have no
     field at once, for the reason that the zones meet where the traction cannot hold."""
-    import viscocontact as vc
-    from viscocontact.methods.bem import BEM
-    from viscocontact.methods.bem.method import Solve
     from viscocontact.methods.bem.sets import Control
-    from viscocontact.problem import ContactProblem
     from viscocontact.testing.campaign import draw
 
-    problem = ContactProblem.from_scene(vc.Scene.from_dict(draw(29)), method=BEM())
-    solve = Solve(problem, problem.prepare())
+    solve = _campaign_solve(draw(29))
     r = solve.equilibrium.residual_at(np.array([-0.04139057, 0.00658234]),
                                       Control.load_of(-0.18407468975388852))
     assert not np.any(np.isfinite(r))

@@ -126,11 +126,11 @@ def test_a_contact_at_rest_that_carries_tension_splits_and_moves_on(penetration,
 
 def test_a_first_contact_that_shrinks_away_detaches():
     """Campaign seed 150 (sinusoid, SLS β = 9483 on a free layer, ζ = 2e-4, weak adhesion):
-    the first contact shrinks from 0.09 wide to nothing. On the zones made for its first
-    width, a contact thousands of times narrower had residuals of round-off (hundreds of times
-    the work of adhesion, of either sign) and the motion wandered for 2000 steps; with its zones
-    remade each time it halves, and detached once narrower than the mesh resolves, the motion
-    ends: no contact holds at first touch."""
+    the first contact spreads to about 1.2 wide, then shrinks to nothing. On the zones made in
+    the motion's first steps, a contact thousands of times narrower had residuals of round-off
+    (hundreds of times the work of adhesion, of either sign) and the motion wandered for 2000
+    steps; with its zones remade as it shrinks, and detached once narrower than the mesh
+    resolves, the motion ends: no contact holds at first touch."""
     from viscocontact.methods.bem.method import Solve
     from viscocontact.methods.bem.sets import Control, first_touch
     from viscocontact.methods.bem.state import Outcome
