@@ -86,6 +86,7 @@ class _Parabola:
     (linear). The stand-in of both the state's edge system and the equilibrium."""
 
     log = None
+    control = Control.penetration_of(0.0)       # (a system in penetration control)
 
     def __init__(self, a, x_star, fold, x_lin, s_lin):
         self.a, self.x_star, self.fold = a, x_star, fold
@@ -127,6 +128,71 @@ def _fold_ahead(v0, step, scale=1.0):
                                Control.penetration_of(v0 + step), v0)
 
 
+def _climb_on(branch, **attributes):
+    """A :class:`Climb` on the stand-in ``branch`` in penetration control, with ``attributes``
+    set (the parts of a climb that its predictors read)."""
+    from viscocontact.methods.bem.climb import Climb
+    from viscocontact.methods.bem.path import Path
+
+    climb = Climb.__new__(Climb)
+    climb.eq, climb.path = branch, Path(branch, closed=None, path_step=0.05)
+    climb.options = ApproachOptions(path_step=0.05)
+    climb.kind, climb.load, climb.below, climb.gaps = "penetration", False, None, []
+    for name, value in attributes.items():
+        setattr(climb, name, value)
+    return climb
+
+
+def _on_parabola(branch, v):
+    x = branch.on_branch(v)
+    return State(outcome=Outcome.CONVERGED, edges=x, system=branch, fields=object())
+
+
+def test_a_look_ahead_ends_the_step_a_quarter_resolution_short_of_a_predicted_fold():
+    """The fields at the predicted start of a step across the parabola's fold predict it: the
+    step ends a quarter of the resolution short of it, and once the state lies within half the
+    resolution, as far past it; a step short of the fold is kept."""
+    branch = _Parabola(a=40.0, x_star=-0.5, fold=0.3, x_lin=[-0.2, 1.0, 1.2],
+                       s_lin=[0.0, 0.0, 5.0])
+    branch.fields_at = lambda edges, control: object()
+
+    class _NoBirth:
+        @staticmethod
+        def closing(before, after):
+            return None
+
+    branch.checks = _NoBirth()
+    climb = _climb_on(branch)
+    width = climb.options.smallest
+    state = _on_parabola(branch, 0.25)
+
+    def ahead(v, step):
+        s = _on_parabola(branch, v) if v != 0.25 else state
+        return climb.looked_ahead(s, v, v + step, climb.path.tangent(s, False))
+
+    assert ahead(0.25, 0.08) == pytest.approx(0.3 - 0.25 * width, rel=1e-12)
+    assert ahead(0.25, 0.04) == 0.29
+    near = 0.3 - 0.4 * width
+    assert ahead(near, 0.01) == pytest.approx(0.3 + 0.25 * width, rel=1e-9)
+
+
+def test_a_births_place_is_the_root_of_the_parabola_through_three_gaps():
+    """The gap at the birth's check point, sampled at the bracket's far end and two states of
+    the branch, gives the root of the parabola through them (exact for a quadratic gap); with
+    two samples, the secant's root."""
+    def gap(v):
+        return (0.06 - v) * (1.0 + 30.0 * v)                # closes at v = 0.06
+
+    climb = _climb_on(_Parabola(a=1.0, x_star=0.0, fold=1.0, x_lin=[], s_lin=[]),
+                      gaps=[(0.07, gap(0.07)), (0.03, gap(0.03)), (0.05, gap(0.05))])
+    assert climb.birth_ahead(0.05, 0.07) == pytest.approx(0.06, rel=1e-12)
+    climb.gaps = [(0.07, gap(0.07)), (0.05, gap(0.05))]
+    secant = 0.05 + 0.02 * gap(0.05) / (gap(0.05) - gap(0.07))
+    assert climb.birth_ahead(0.05, 0.07) == pytest.approx(secant, rel=1e-12)
+    climb.gaps = [(0.07, gap(0.07))]
+    assert climb.birth_ahead(0.05, 0.07) is None
+
+
 def test_a_failed_steps_start_puts_the_fold_where_a_parabolic_branch_folds():
     """On ``v* - v = a(x - x*)²`` the residual at the start predicted along the tangent is
     ``½h²r''`` exactly, so the estimate is the fold (although another edge runs faster); a
@@ -141,3 +207,18 @@ def test_the_options_are_one_frozen_object():
     assert options.smallest == pytest.approx(0.05 / 256)
     with pytest.raises(attrs.exceptions.FrozenInstanceError):
         options.resolution = 0.5  # type: ignore[misc]
+
+
+def test_the_gap_closes_where_the_earliest_check_point_outside_both_contact_sets_closes():
+    """Linear in the step between the gaps before and after at the check points outside the
+    contacts of both (a point inside the later contacts is left out); None while it stays
+    open."""
+    from viscocontact.methods.bem.checks import Checks
+
+    gaps = {"before": (np.array([0.0, 1.0, 2.0, 3.0]), np.array([0.2, 0.1, 0.3, 0.4])),
+            "after": (np.array([0.0, 1.0, 3.0]), np.array([0.1, -0.1, -0.2])),
+            "open": (np.array([0.0, 1.0, 3.0]), np.array([0.1, 0.05, 0.2]))}
+    checks = Checks.__new__(Checks)
+    checks.gap_outside = gaps.__getitem__
+    assert checks.closing("before", "after") == pytest.approx(0.5, rel=1e-12)
+    assert checks.closing("before", "open") is None

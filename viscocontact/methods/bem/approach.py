@@ -13,11 +13,13 @@ or under load control to the target load. A continuation follows the branch:
   prediction however short the step; under load control also the *load peak*, past which the
   branch is unstable), a *birth* (the profile penetrates the solid outside the contacts), a
   *merge*, *detachment* or *split* of contacts, *closure* over the period, and the *target*.
-  A step that meets one is shortened, towards the fold the branch's curvature predicts
-  (:meth:`Climb.fold_ahead <.climb.Climb.fold_ahead>`) or the birth the smallest gap's secant
-  predicts (:meth:`Climb.birth_ahead <.climb.Climb.birth_ahead>`),
-  else by halves, until the event lies within :attr:`resolution <ApproachOptions.resolution>`
-  of the path step.
+  Before a step is solved, the fields at its predicted start predict a fold or a birth within
+  it, and the step ends next to the earlier (:meth:`Climb.looked_ahead
+  <.climb.Climb.looked_ahead>`). A step that meets one is shortened, towards the fold the
+  branch's curvature predicts (:meth:`Climb.fold_ahead <.climb.Climb.fold_ahead>`) or the
+  root of the gap where the contact is born (:meth:`Climb.birth_ahead
+  <.climb.Climb.birth_ahead>`), else by halves, until the event lies within
+  :attr:`resolution <ApproachOptions.resolution>` of the path step.
 * every **action** that leaves the branch (the first contact settling, a fold, a contact-set
   change) follows one stated rule: the overdamped motion of the edges
   (:mod:`~viscocontact.methods.bem.relax`) from the last state on the branch, at the control

@@ -11,6 +11,10 @@ from ...contact.topology import TWO_PI, negative_regions
 from .sets import Control, first_touch, inside
 
 
+#: The depth of interpenetration outside the contacts at which a contact is born.
+BIRTH_DEPTH = 1e-9
+
+
 class Checks:
     """The check grid of one solve.
 
@@ -39,7 +43,12 @@ class Checks:
 
     def gap_outside(self, fields):
         """Gap ``ũ - w`` at the check points outside the contacts (edges excluded by 1% width)."""
-        x = self.check_x
+        return self.gap_at(fields, self.check_x)
+
+    def gap_at(self, fields, x):
+        """The points of ``x`` outside the contacts (edges excluded by 1% width) and the gap
+        ``ũ - w`` there."""
+        x = np.asarray(x, dtype=float)
         mesh = fields.mesh
         keep = np.ones(x.shape, bool)
         for j in range(mesh.n_contacts):
@@ -55,11 +64,25 @@ class Checks:
         w = self.prep.shape.heights(xs) - 1.0 + fields.penetration
         return xs, u - w
 
+    def closing(self, before, after) -> float | None:
+        """The fraction of a step at which the gap outside the contacts first closes: linear
+        between the fields ``before`` (the step's start, where it is open) and ``after`` (its
+        predicted end), at the check points outside the contacts of both, the earliest where
+        the profile penetrates at the end (:meth:`births`' depth); None where it stays open."""
+        xs0, g0 = self.gap_outside(before)
+        xs1, g1 = self.gap_outside(after)
+        _, i0, i1 = np.intersect1d(xs0, xs1, assume_unique=True, return_indices=True)
+        g0, g1 = g0[i0], g1[i1]
+        closes = (g0 > 0.0) & (g1 < -BIRTH_DEPTH)
+        if not np.any(closes):
+            return None
+        return float(np.min(g0[closes] / (g0[closes] - g1[closes])))
+
     def births(self, fields, outside=None):
         """Regions ``(a, b, depth)`` outside the contacts where the profile penetrates
         (``outside``: :meth:`gap_outside` of ``fields`` when at hand)."""
         xs, gap = self.gap_outside(fields) if outside is None else outside
-        return negative_regions(xs, gap, 1e-9)
+        return negative_regions(xs, gap, BIRTH_DEPTH)
 
     def births_without_contact(self, control: Control):
         """Contacts of a state without any: where the profile penetrates the undeformed solid

@@ -1,11 +1,13 @@
 """The climb of an approach: a branch of equilibria followed in steps, its events located.
 
 Steps in the controlled quantity start from the branch's tangent (:meth:`Path.predicted`) and
-are solved at a fixed control with the contact set held. A step that meets an event (a fold, a
-contact-set change, closure, the target load passed) brackets it: the next steps stay inside,
-aimed at the event's predicted place (:meth:`Climb.fold_ahead`, :meth:`Climb.birth_ahead`), else
-at the bracket's middle, until the bracket is :attr:`ApproachOptions.smallest` wide; then the
-event acts (:meth:`Approach.act <.approach.Approach.act>`) from the state at its end.
+are solved at a fixed control with the contact set held; a step ends next to a fold or a birth
+that the fields at its predicted start foresee within it (:meth:`Climb.looked_ahead`). A step
+that meets an event (a fold, a contact-set change, closure, the target load passed) brackets
+it: the next steps stay inside, aimed at the event's predicted place (:meth:`Climb.fold_ahead`,
+:meth:`Climb.birth_ahead`), else at the bracket's middle, until the
+bracket is :attr:`ApproachOptions.smallest` wide; then the event acts (:meth:`Approach.act
+<.approach.Approach.act>`) from the state at its end.
 """
 from __future__ import annotations
 
@@ -38,9 +40,12 @@ class Climb:
         # |d(control)/dΔ̃| of the first contact's branch, at least 1: the unit of the steps,
         # fixed for the solve (the events are located to ApproachOptions.smallest of the control)
         self.unit = max(1.0, self.scale(state, self.load, 1.0))
-        self.bracket: tuple | None = None  # (value past the event, kind, width, gap there)
+        self.bracket: tuple | None = None  # (value past the event, kind, width)
         self.aim: float | None = None                # the event's predicted place inside it
-        self.retained = False       # a step inside the bracket kept its far end already
+        # a birth's bracket: the check point where the gap closes and the gap there, (value,
+        # gap), at the bracket's far end and the branch's states since its start
+        self.point = np.nan
+        self.gaps: list[tuple[float, float]] = []
 
     def run(self) -> State:
         """Follow the branch to the target in steps of the controlled quantity."""
@@ -82,6 +87,8 @@ class Climb:
         state, v, kind, load = self.state, self.v, self.kind, self.load
         v_next = self.next_value(v, self.step * self.unit, self.end, self.bracket, self.aim)
         tangent = path.tangent(state, load)
+        if self.bracket is None and eq.adhesive:
+            v_next = self.looked_ahead(state, v, v_next, tangent)
         start = path.predicted(state, v_next - v, load=load, tangent=tangent)
         last = v_next == self.end
         logged = len(eq.log.records)
@@ -101,13 +108,8 @@ class Climb:
                                        trial.edges)
             self.below, self.state, self.v = state, trial, v_next
             if self.bracket is not None and self.bracket[1] == "birth":
-                if self.retained:
-                    # the bracket's far end kept twice in a row: its gap halved (the Illinois
-                    # variant of the false position, which otherwise converges only linearly
-                    # on a curved gap: four to six steps a birth on the rough profile)
-                    self.bracket = (*self.bracket[:3], 0.5 * self.bracket[3])
-                self.retained = True
-                self.aim = self.birth_ahead(trial, v_next, self.bracket)
+                self.sampled(trial, v_next)
+                self.aim = self.birth_ahead(v_next, self.bracket[0])
             return
         del eq.log.records[logged:]     # (a step past an event is not on the path)
         if event == "fold" and not eq.adhesive and abs(v_next - v) > 2.0 * opt.smallest:
@@ -115,12 +117,44 @@ class Climb:
             # births and merges at once), which a shorter one gets through
             self.step = 0.5 * abs(v_next - v) / self.unit
             return
-        self.bracket, self.aim = (v_next, event, opt.smallest, trial.gap), None
-        self.retained = False
+        self.bracket, self.aim, self.gaps = (v_next, event, opt.smallest), None, []
         if event == "fold" and eq.adhesive:
             self.aim = self.fold_ahead(state, tangent, start, Control(kind, v_next), v)
-        elif event == "birth":
-            self.aim = self.birth_ahead(state, v, self.bracket)
+        elif event == "birth" and trial.fields is not None:
+            # the gap is followed at the check point where the held set penetrates deepest
+            xs, gap = eq.checks.gap_outside(trial.fields)
+            self.point, self.gaps = xs[int(np.argmin(gap))], [(v_next, float(np.min(gap)))]
+            for sample, at in ((self.below, None), (state, v)):
+                if sample is not None:
+                    self.sampled(sample, self.value_of(sample) if at is None else at)
+            self.aim = self.birth_ahead(v, v_next)
+
+    def looked_ahead(self, state: State, v: float, v_next: float, tangent) -> float:
+        """The end of the step from ``state`` (at ``v``) towards ``v_next``, shortened where an
+        event is predicted within it. The fields at the step's predicted start (the corrector's
+        first evaluation, which its solve then takes from the shared ones) give where the gap
+        outside the contacts closes (a birth; :meth:`Checks.closing <.checks.Checks.closing>`)
+        and where the branch folds (:meth:`Path.fold_within <.path.Path.fold_within>`); the
+        step ends a quarter of the resolution short of the earlier, or as far past it once it
+        lies within half the resolution, so that an event predicted well is bracketed by two
+        steps instead of a failed long one and its halvings."""
+        change, width = v_next - v, self.options.smallest
+        if tangent is None or state.fields is None or abs(change) <= width:
+            return v_next
+        control = Control(self.kind, v_next)
+        start = self.path.predicted(state, change, load=self.load, tangent=tangent)
+        fields = self.eq.fields_at(start, control)
+        if fields is None:
+            return v_next
+        places = [self.eq.checks.closing(state.fields, fields)]
+        fold = self.path.fold_within(state, tangent, start, control, change)
+        if fold is not None:
+            places.append(fold[0] / abs(change))
+        place = min((p for p in places if p is not None and 0.0 <= p < 1.0), default=None)
+        if place is None:
+            return v_next
+        distance, sign = place * abs(change), float(np.sign(change))
+        return v + sign * (distance + (0.25 if distance <= 0.5 * width else -0.25) * width)
 
     @staticmethod
     def scale(state: State, load: bool, previous: float) -> float:
@@ -180,18 +214,43 @@ class Climb:
                     return float(value)
         return 0.5 * (v + past)
 
-    def birth_ahead(self, state: State, v: float, bracket: tuple) -> float | None:
-        """Where a contact is born inside ``bracket``: the secant root of the smallest gap
-        outside the contacts, from ``state`` (at ``v``, no penetration) to the bracket's end
-        (where the held contact set penetrates); None without both gaps."""
-        past, gap_past = bracket[0], bracket[3]
-        if state.fields is None or not gap_past < 0.0:
+    def value_of(self, state: State) -> float:
+        return self.approach.value(state, self.kind)
+
+    def sampled(self, state: State, v: float) -> None:
+        """The gap of ``state`` (at ``v``) at the birth's check point, kept (where that point
+        lies outside its contacts)."""
+        if state.fields is None:
+            return
+        xs, gap = self.eq.checks.gap_at(state.fields, [self.point])
+        if gap.size and np.isfinite(gap[0]):
+            self.gaps.append((v, float(gap[0])))
+
+    def birth_ahead(self, v: float, past: float) -> float | None:
+        """Where a contact is born between ``v`` and the bracket's far end ``past``: the root of
+        the gap at the birth's check point, of the parabola through its samples at the far end
+        and the branch's last two states (else of the secant through the state's and the far
+        end's). It converges superlinearly where the false position of the bracket's ends
+        converges linearly on a curved gap (four to six steps a birth on the rough profile).
+        None without a sample of each sign."""
+        # the far end (the first sample) and the branch's last two states
+        samples = sorted(self.gaps[:1] + self.gaps[1:][-2:], key=lambda s: s[0])
+        values = np.array([s[0] for s in samples])
+        gaps = np.array([s[1] for s in samples])
+        if not (np.any(gaps > 0) and np.any(gaps < 0)):
             return None
-        _, gap = self.eq.checks.gap_outside(state.fields)
-        here = float(np.min(gap)) if gap.size else np.nan
-        if not here > 0.0:
+        lo, hi = min(v, past), max(v, past)
+        if len(samples) == 3 and len(set(values)) == 3:
+            roots = np.roots(np.polyfit(values - v, gaps, 2)) + v
+            roots = roots[np.isreal(roots)].real
+            inside = roots[(roots > lo) & (roots < hi)]
+            if inside.size == 1:
+                return float(inside[0])
+        k = int(np.argmin(np.abs(values - v)))      # the state, and the far end
+        i = int(np.argmin(np.abs(values - past)))
+        if gaps[k] <= 0 or gaps[i] >= 0:
             return None
-        return v + (past - v) * here / (here - gap_past)
+        return float(values[k] + (values[i] - values[k]) * gaps[k] / (gaps[k] - gaps[i]))
 
     def event(self, state: State, start, trial: State) -> str | None:
         """What ends the branch within a step to ``trial`` (None: the step is on the branch).

@@ -97,6 +97,19 @@ class Equilibrium:
         self.log.evaluations += system.evaluations
         return r
 
+    def fields_at(self, edges, control: Control):
+        """The fields of ``edges`` at ``control`` (None where they are no valid contact set or
+        the adhesion model has no field there). A solve from ``edges`` at ``control`` right
+        after takes this evaluation from the shared ones (:class:`~.system.Evaluations`)."""
+        x = np.asarray(edges, dtype=float)
+        system = self.system(control, x)
+        try:
+            fields, _, r = system.evaluate(x)
+        except TopologyChange:
+            return None
+        self.log.evaluations += system.evaluations
+        return fields if fields is not None and np.all(np.isfinite(r)) else None
+
     def solve(self, edges, control: Control, use_fallback: bool = True,
               budget: int | None = None, refine: bool = True, polish: bool = True,
               fallback_budget: int | None = None, probation: int = 0,

@@ -14,8 +14,9 @@ residual recedes. The flow is integrated by linearly implicit Euler steps, ``(I/
 chosen so that each step's local error, ``h²/2·Ẍ`` estimated as ``h/2`` times the change of the
 edges' speed over the step (one residual a step), is within ``tolerance`` of its contact's
 half-width (or of the mean half-width, when that is larger; a step after a rejected one does not
-grow); contacts that meet merge, contacts that narrow below the shortest length the mesh resolves
-detach, contacts that close over the period close where full contact can be the state
+grow, and the growth of the error over the last step is taken to go on); contacts that meet
+merge, contacts that narrow below the shortest length the mesh resolves detach, contacts that
+close over the period close where full contact can be the state
 (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
 incompressible solid below its closing penetration a gap of the volume the penetration fixes stays
 open), and the mesh zones are remade in the first steps, at rest, where a contact shrank to less
@@ -128,6 +129,8 @@ class _Motion:
     rezoned: int = 0
     moved: int = 0                      # accepted steps
     rejected: bool = False              # the last step was rejected
+    error: float | None = None          # the local error of the last accepted step
+    taken: float | None = None          # ... and its length
     ghost: float = np.inf               # max|r| below which the motion is at rest again
     early: bool = True                  # no equilibrium solve tried yet: zones are remade
     #                                     (the motion's first steps move edges the most)
@@ -352,8 +355,8 @@ class Relaxation:
             m.h = 0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(m.r), 1e-300)))
         # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign
         # past 2/h): the step resolves the growth of every unstable mode of the motion
-        m.h = min(m.h, UNSTABLE_STEP / _growth(m.J))
-        move = _step(m.r, m.J, m.h)
+        m.h = h = min(m.h, UNSTABLE_STEP / _growth(m.J))
+        move = _step(m.r, m.J, h)
         if move is None:
             m.h, m.J = 0.25 * m.h, None
             return None
@@ -386,11 +389,7 @@ class Relaxation:
             m.h *= 0.25 if r is None else max(0.2, 0.9 * np.sqrt(self.tolerance / error))
             m.J, m.rejected = None, r is not None
             return None
-        # the step after a rejected one does not grow (Hairer, Nørsett & Wanner I, II.4):
-        # while the edges accelerate, a grown step is rejected again
-        m.h *= min(1.0 if m.rejected else 4.0,
-                   0.9 * np.sqrt(self.tolerance / max(error, 1e-300)))
-        m.rejected = False
+        _accepted(m, h, error, self.tolerance)
         m.moved, m.age, m.x, m.r = m.moved + 1, m.age + 1, landed, r
         for kind, word in (("merge", "merge"), ("detachment", "detach")):
             if changed and word in reason:
@@ -498,6 +497,19 @@ def _vanishing(before: np.ndarray, after: np.ndarray) -> np.ndarray:
     out[0::2][gone] = middle[gone]
     out[1::2][gone] = middle[gone]
     return out
+
+
+def _accepted(m: "_Motion", h: float, error: float, tolerance: float) -> None:
+    """The step after an accepted one, ``h`` long, of local error ``error``. It does not grow after a
+    rejected one (Hairer, Nørsett & Wanner I, II.4: while the edges accelerate, a grown step
+    is rejected again), and the error's growth since the last step is taken to go on
+    (Gustafsson's predictive controller, Hairer & Wanner IV.8): past a fold the edges
+    accelerate for several steps."""
+    grow = 0.9 * np.sqrt(tolerance / max(error, 1e-300))
+    if m.error is not None and m.taken is not None and error > 0.0:
+        grow = min(grow, grow * (h / m.taken) * np.sqrt(m.error / error))
+    m.error, m.taken = (error, h) if error > 0.0 else (None, None)
+    m.h, m.rejected = h * min(1.0 if m.rejected else 4.0, grow), False
 
 
 def _local_error(m: "_Motion", r: np.ndarray, changed: bool) -> float:
