@@ -5,8 +5,8 @@ are solved at a fixed control with the contact set held; a step ends next to a f
 that the fields at its predicted start foresee within it (:meth:`Climb.looked_ahead`). A step
 that meets an event (a fold, a contact-set change, closure, the target load passed) brackets
 it: the next steps stay inside, aimed at the event's predicted place (:meth:`Climb.fold_ahead`,
-:meth:`Climb.birth_ahead`), else at the bracket's middle, until the
-bracket is :attr:`ApproachOptions.smallest` wide; then the event acts (:meth:`Approach.act
+:meth:`Climb.birth_ahead`), else at the bracket's middle, until the bracket is
+:attr:`ApproachOptions.smallest` wide; then the event acts (:meth:`Approach.act
 <.approach.Approach.act>`) from the state at its end.
 """
 from __future__ import annotations
@@ -215,6 +215,7 @@ class Climb:
         return 0.5 * (v + past)
 
     def value_of(self, state: State) -> float:
+        """The state's value of the climb's control."""
         return self.approach.value(state, self.kind)
 
     def sampled(self, state: State, v: float) -> None:
@@ -222,7 +223,7 @@ class Climb:
         lies outside its contacts)."""
         if state.fields is None:
             return
-        xs, gap = self.eq.checks.gap_at(state.fields, [self.point])
+        _, gap = self.eq.checks.gap_at(state.fields, [self.point])
         if gap.size and np.isfinite(gap[0]):
             self.gaps.append((v, float(gap[0])))
 

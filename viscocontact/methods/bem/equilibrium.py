@@ -146,8 +146,8 @@ class Equilibrium:
 
         ``changes = False``: the contact set is held. Where the solve would change it (a birth,
         a merge, a detachment, a split), it stops and returns the state with
-        :attr:`State.change` set (for a birth, the converged state of the held set and its
-        smallest gap :attr:`State.gap`): the approach locates the change along its path and
+        :attr:`State.change` set (for a birth, the converged state of the held set, whose
+        fields show where the profile penetrates): the approach locates the change along its path and
         makes it there.
         """
         return Restarts(self, control, use_fallback=use_fallback, budget=budget,

@@ -500,9 +500,9 @@ def _vanishing(before: np.ndarray, after: np.ndarray) -> np.ndarray:
 
 
 def _accepted(m: "_Motion", h: float, error: float, tolerance: float) -> None:
-    """The step after an accepted one, ``h`` long, of local error ``error``. It does not grow after a
-    rejected one (Hairer, Nørsett & Wanner I, II.4: while the edges accelerate, a grown step
-    is rejected again), and the error's growth since the last step is taken to go on
+    """The step after an accepted one, ``h`` long, of local error ``error``. It does not grow
+    after a rejected one (Hairer, Nørsett & Wanner I, II.4: while the edges accelerate, a grown
+    step is rejected again), and the error's growth since the last step is taken to go on
     (Gustafsson's predictive controller, Hairer & Wanner IV.8): past a fold the edges
     accelerate for several steps."""
     grow = 0.9 * np.sqrt(tolerance / max(error, 1e-300))

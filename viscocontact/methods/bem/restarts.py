@@ -207,7 +207,7 @@ class Restarts:
         if not self.changes:
             return State(outcome=Outcome.CONVERGED, edges=x, fields=fields, ctx=ctx,
                          residual=size, message="a contact is born", system=system,
-                         change="birth", gap=float(np.min(outside[1])))
+                         change="birth")
         self.converged_before_births.append(x.copy())
         new = [v for (a, b, _) in regions for v in (a, b)]
         merged, _, _, full = repair(np.concatenate([x, new]), MIN_WIDTH, MIN_GAP)

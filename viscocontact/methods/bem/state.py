@@ -39,9 +39,6 @@ class State:
     #: motion (not converged) "cycle" (a split whose parts merge again) or "reborn" (contacts
     #: that detach at a positive penetration are born again where they were); "" otherwise
     change: str = ""
-    #: with ``change == "birth"``: the smallest gap outside the contacts (negative: the
-    #: profile penetrates there)
-    gap: float = float("nan")
 
     @property
     def converged(self) -> bool:
