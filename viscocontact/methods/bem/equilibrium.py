@@ -87,20 +87,11 @@ class Equilibrium:
     def _limited(self, reason: str) -> None:
         self.limitation = reason
 
-    def residual_at(self, edges, control: Control):
-        """The edge residuals of ``edges`` (``None`` when they are no valid contact set)."""
-        system = self.system(control, edges)
-        try:
-            r = system.residual(edges)
-        except TopologyChange:
-            return None
-        self.log.evaluations += system.evaluations
-        return r
-
-    def fields_at(self, edges, control: Control):
-        """The fields of ``edges`` at ``control`` (None where they are no valid contact set or
-        the adhesion model has no field there). A solve from ``edges`` at ``control`` right
-        after takes this evaluation from the shared ones (:class:`~.system.Evaluations`)."""
+    def evaluated(self, edges, control: Control):
+        """``(fields, r)`` of ``edges`` at ``control``: the fields (None where the adhesion
+        model has no field there) and the edge residuals; None when the edges are no valid
+        contact set. A solve from ``edges`` at ``control`` right after takes this evaluation
+        from the shared ones (:class:`~.system.Evaluations`)."""
         x = np.asarray(edges, dtype=float)
         system = self.system(control, x)
         try:
@@ -108,7 +99,18 @@ class Equilibrium:
         except TopologyChange:
             return None
         self.log.evaluations += system.evaluations
-        return fields if fields is not None and np.all(np.isfinite(r)) else None
+        return fields, r
+
+    def residual_at(self, edges, control: Control):
+        """The edge residuals of ``edges`` (``None`` when they are no valid contact set)."""
+        out = self.evaluated(edges, control)
+        return None if out is None else out[1]
+
+    def fields_at(self, edges, control: Control):
+        """The fields of ``edges`` at ``control`` (None where they are no valid contact set or
+        the adhesion model has no field there; :meth:`evaluated`)."""
+        out = self.evaluated(edges, control)
+        return None if out is None or not np.all(np.isfinite(out[1])) else out[0]
 
     def solve(self, edges, control: Control, use_fallback: bool = True,
               budget: int | None = None, refine: bool = True, polish: bool = True,
