@@ -129,8 +129,7 @@ class _Motion:
     rezoned: int = 0
     moved: int = 0                      # accepted steps
     rejected: bool = False              # the last step was rejected
-    error: float | None = None          # the local error of the last accepted step
-    taken: float | None = None          # ... and its length
+    last: tuple | None = None           # (local error, length) of the last accepted step
     ghost: float = np.inf               # max|r| below which the motion is at rest again
     early: bool = True                  # no equilibrium solve tried yet: zones are remade
     #                                     (the motion's first steps move edges the most)
@@ -506,9 +505,9 @@ def _accepted(m: "_Motion", h: float, error: float, tolerance: float) -> None:
     (Gustafsson's predictive controller, Hairer & Wanner IV.8): past a fold the edges
     accelerate for several steps."""
     grow = 0.9 * np.sqrt(tolerance / max(error, 1e-300))
-    if m.error is not None and m.taken is not None and error > 0.0:
-        grow = min(grow, grow * (h / m.taken) * np.sqrt(m.error / error))
-    m.error, m.taken = (error, h) if error > 0.0 else (None, None)
+    if m.last is not None and error > 0.0:
+        grow = min(grow, grow * (h / m.last[1]) * np.sqrt(m.last[0] / error))
+    m.last = (error, h) if error > 0.0 else None
     m.h, m.rejected = h * min(1.0 if m.rejected else 4.0, grow), False
 
 
