@@ -293,3 +293,22 @@ def test_the_grid_answer_stands_where_the_bem_cannot_finish():
 
 def test_a_stalling_grid_leaves_the_coarser_one():
     _converges(STALLING_GRID_ROUGH)
+
+
+# campaign seed 29 (drawn values): the first contact, snapped in at the first touch's
+# penetration, was left at p̃∞ = -0.18 on the branch that load control cannot hold; every load
+# step from there failed, and the jump past that "fold" met Maugis-Dugdale zones with no field.
+# Snapped in at zero load, as the load rises from zero, it converges in about 3 s
+LOADED_WAVY_MD_FREE_LAYER = {
+    "profile": {"kind": "sinusoid", "amplitude": 0.01851035050625423},
+    "rheology": {"kind": "prony", "moduli": [211.28280313618015, 1058.0755483434177],
+                 "times": [6.388963878236111, 77.00854336871096]},
+    "kernel": {"kind": "free-layer", "thickness": 19.30593954644707},
+    "adhesion": {"kind": "maugis-dugdale", "gamma": 7.690047019619966e-06,
+                 "range": 0.0008513248725192845},
+    "load": {"mean_pressure": 0.681225488507536}, "sliding": {"zeta": 0.00018571175829673744},
+    "solver": {"kind": "newton"}}
+
+
+def test_under_load_control_the_first_contact_snaps_in_at_zero_load():
+    _converges(LOADED_WAVY_MD_FREE_LAYER)

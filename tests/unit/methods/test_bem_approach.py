@@ -71,6 +71,27 @@ def test_past_its_load_peak_a_wavy_contact_jumps_to_closure_under_load_control()
     assert "mean_pressure" in events[-2] and events[-2]["mean_pressure"] < 0.6
 
 
+def test_under_load_control_the_first_contact_settles_at_zero_load(monkeypatch):
+    """Loaded from zero, the profile first touches under no load: its first contact snaps in
+    under load control, at p̃∞ = 0, not at the first touch's penetration (which left it at a
+    tensile load on the branch that load control cannot hold)."""
+    from viscocontact.methods.bem.approach import Approach
+
+    starts = []
+    climb = Approach.climb
+
+    def recorded(self, state, target):
+        starts.append(float(state.fields.mean_pressure))
+        return climb(self, state, target)
+
+    monkeypatch.setattr(Approach, "climb", recorded)
+    problem = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=SLS, solver=Newton(),
+                             adhesion=EnergyBalance(gamma=1e-4), zeta=1e-3, mean_pressure=0.1)
+    assert problem.solve().converged
+    # the landing's load is zero to the solve's tolerance on the edges' residuals (1e-9)
+    assert starts and abs(starts[0]) < 1e-6
+
+
 def test_the_target_ends_the_path_exactly():
     for control in ({"penetration": 0.3}, {"mean_pressure": 0.1}):
         problem = ContactProblem(profile=Sinusoid(amplitude=0.1), rheology=SLS, solver=Newton(),

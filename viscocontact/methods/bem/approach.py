@@ -2,7 +2,9 @@
 
 The contact is pressed on at constant speed, slowly: its state follows a branch of equilibria
 in the penetration ``Δ̃``, from the first contact at the highest peak to the target penetration,
-or under load control to the target load. A continuation follows the branch:
+or under load control to the target load. The first contact snaps in at the penetration of the
+first touch, or under load control at zero load (the load rises from zero). A continuation
+follows the branch:
 
 * **steps** in the controlled quantity start from the branch's tangent (:meth:`Path.predicted`)
   and are solved at a fixed control with the contact set held; a step is accepted when its
@@ -112,7 +114,9 @@ class Approach:
         d0, edges = first_touch(self.eq.prep.shape)
         if not self.eq.adhesive:
             return self.pressed(edges, d0, target)
-        touch = Control.penetration_of(d0)
+        # the first contact snaps in under the history's control: at the touch's penetration,
+        # or at zero load when the load rises from zero
+        touch = Control.load_of(0.0) if target.is_load else Control.penetration_of(d0)
         edges = self.with_field(edges, touch)
         # (a first contact that travels off the asperity and vanishes: none holds at first
         # touch, and the profile is pressed on)
@@ -127,8 +131,9 @@ class Approach:
             return state
         if state.outcome is Outcome.NOT_CONVERGED and "without a valid field" in state.message:
             # the model has no field at any first contact (Maugis-Dugdale zones longer than
-            # the contact whose equations have no solution there): loaded at once, the target
-            # solved from the first contact widened
+            # the contact whose equations have no solution there), or the first contact's
+            # motion runs to where it has none: loaded at once, the target solved from the
+            # first contact widened
             _record(self.eq.log, "no first contact", penetration=d0)
             return self.at_once(edges, target)
         if state.outcome is Outcome.NO_CONTACT:

@@ -14,7 +14,10 @@ residual recedes. The flow is integrated by linearly implicit Euler steps, ``(I/
 chosen so that each step's local error, ``h²/2·Ẍ`` estimated as ``h/2`` times the change of the
 edges' speed over the step (one residual a step), is within ``tolerance`` of its contact's
 half-width (or of the mean half-width, when that is larger; a step after a rejected one does not
-grow, and the growth of the error over the last step is taken to go on); contacts that meet
+grow, and the growth of the error over the last step is taken to go on), and so that no edge
+moves further than ``√(2·tolerance)`` of that scale (the error of a move over which the speed
+changes within a half-width; the ends alone do not see a residual that is flat between them);
+contacts that meet
 merge, contacts that narrow below the shortest length the mesh resolves detach, contacts that
 close over the period close where full contact can be the state
 (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
@@ -33,14 +36,16 @@ the rest level); where the equilibrium solve finds no root at rest, the motion g
 Where the profile penetrates at its root, contacts are born there, at zero size, and the motion
 goes on with them (a born contact grows as every edge moves); where a contact at rest carries more
 tension than the interface holds (any, without adhesion; the cohesive stress σ̃0 under a cohesive
-law), it splits there and the motion goes on with its parts. Where the parts merge again and split
-at the same place a third time, the tension is a nearly vanishing stress whose sign the mesh does
-not resolve: the contact is refined there, as the equilibrium solve refines it
-(:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which has no shorter
-step to get past it), and the motion goes on. Where every contact detaches while the profile
-penetrates the undeformed solid, contacts are born there and the motion goes on; born again where
-they were, the motion is periodic (no steady state). So merges, detachments, births and splits all
-happen on the way, as the motion makes them.
+law), it opens over the stretch around its largest tension and the motion goes on with its parts.
+Where the parts merge again and split at the same place a third time, the tension is a nearly
+vanishing stress whose sign the mesh does not resolve: the contact is refined there, as the
+equilibrium solve refines it (:func:`~.restarts.refined_where_alternating`; in an intermediate
+motion too, which has no shorter step to get past it), and the motion goes on. Where every contact
+detaches while the profile penetrates the undeformed solid, contacts are born there and the motion
+goes on; born again where they were, the motion is periodic (no steady state). Where the steps
+creep to the end of the model's reach (no field past it; :data:`WALL`), the motion ends there, not
+converged. So merges, detachments, births and splits all happen on the way, as the motion makes
+them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
@@ -78,6 +83,9 @@ NEWTON_REACH = 0.25
 #: ... and that root is taken when the simplified Newton step after it is at most this
 #: fraction of it (the contraction of Newton's iteration there; at a fold it tends to 1).
 NEWTON_CONTRACTION = 0.25
+#: A step whose end has no field, shorter than this many half-widths, ends the motion (the
+#: round-off of the edges' positions: the motion has come to the end of the model's reach).
+WALL = 1e-12
 #: Accepted steps taken with one Jacobian (linearly implicit Euler stays consistent with an
 #: older one; a rejected step or a new contact set takes a fresh one).
 JACOBIAN_AGE = 8
@@ -226,8 +234,8 @@ class Relaxation:
         if out.change == "split" and out.fields is not None:
             strength = split_strength(eq)
             split, where, tension = tensile_split(out.fields, strength=strength)
-            place = ("where it carried tension" if strength == 0.0
-                     else "where its tension exceeded the cohesive stress")
+            place = ("where they carried tension" if strength == 0.0
+                     else "where their tension exceeded the cohesive stress")
             if split is not None:
                 edges, _, _, full = repair(split, MIN_WIDTH, MIN_GAP)
                 if sum(len(edges) == len(y) and np.allclose(edges, y, rtol=0, atol=1e-3)
@@ -245,8 +253,8 @@ class Relaxation:
                                  change="cycle", message=f"{why} (split {place}, three times)")
                 self._splits.append(edges)
                 if not full and len(edges) > len(out.edges):
-                    eq.log.event(f"{len(where)} contact(s) split {place} (up to "
-                                 f"{tension:.2g} of the largest stress)")
+                    eq.log.event(f"contacts opened at {len(where)} place(s) {place} (up "
+                                 f"to {tension:.2g} of the largest stress)")
                     eq.log.records.append({"kind": "split", "control": control.value,
                                            "contacts": float(len(where))})
                     return edges
@@ -333,6 +341,12 @@ class Relaxation:
         if size > m.tested:
             return None
         m.tested = 0.5 * size
+        if m.age > 0:
+            # Newton's iteration from here contracts with the Jacobian here: one aged over
+            # the motion's steps (a newborn contact stiffens as it grows) tests another one
+            m.J, m.age = _valid(m.system.jacobian, m.x), 0
+            if m.J is None:
+                return None
         start = _newton_start(m.system, m.r, m.J, m.x)
         if start is None:
             return None
@@ -350,15 +364,10 @@ class Relaxation:
         the contacts born where every contact detached and the profile penetrates."""
         if m.r is None or m.J is None:
             return self._failed(m.x, "met a contact set without a valid field")
-        if m.h is None:         # the first step moves the fastest edge a twentieth of a scale
-            m.h = 0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(m.r), 1e-300)))
-        # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign
-        # past 2/h): the step resolves the growth of every unstable mode of the motion
-        m.h = h = min(m.h, UNSTABLE_STEP / _growth(m.J))
-        move = _step(m.r, m.J, h)
+        move = _proposed(m, self.tolerance)
         if move is None:
-            m.h, m.J = 0.25 * m.h, None
             return None
+        h = m.h
         landed, changed, reason, full = repair(_vanishing(m.x, m.x + move), MIN_WIDTH, MIN_GAP)
         if full and not self.closed.possible(control):
             # full contact is no state here (the load it cannot carry, or the gap volume that a
@@ -384,6 +393,12 @@ class Relaxation:
         if error > self.tolerance:
             if after is not m.system:
                 systems.discard(after)      # a step not taken: its new system is let go
+            if r is None and float(np.max(np.abs(move) / _scale(m.x))) <= WALL:
+                # the edges have come to the edge of the model's reach (a Maugis-Dugdale zone
+                # that runs across the neck to the facing edge, where the gap exceeds the
+                # range): steps that creep towards it shrink to round-off
+                return self._failed(m.x, "met a contact set without a valid field ("
+                                         f"{self.eq.limitation or 'no field'})")
             # no field at the step's end (a Maugis-Dugdale zone's equations): a quarter step
             m.h *= 0.25 if r is None else max(0.2, 0.9 * np.sqrt(self.tolerance / error))
             m.J, m.rejected = None, r is not None
@@ -436,6 +451,29 @@ class Relaxation:
                                         "contacts": float(len(born) // 2)})
             return born
         return State.no_contact()
+
+
+def _proposed(m: "_Motion", tolerance: float) -> np.ndarray | None:
+    """The move of the motion's next step, its length ``m.h`` set; None when the step is to
+    be tried again shorter (``m.h`` shortened)."""
+    if m.h is None:         # the first step moves the fastest edge a twentieth of a scale
+        m.h = 0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(m.r), 1e-300)))
+    # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign past
+    # 2/h): the step resolves the growth of every unstable mode of the motion
+    m.h = h = min(m.h, UNSTABLE_STEP / _growth(m.J))
+    move = _step(m.r, m.J, h)
+    if move is None:
+        m.h, m.J = 0.25 * m.h, None
+        return None
+    reach = float(np.max(np.abs(move) / _scale(m.x))) / np.sqrt(2.0 * tolerance)
+    if reach > 1.0:
+        # the local error h/2·|Δr| sees the residual at the step's ends only: where it is flat
+        # (a Maugis-Dugdale tip below the profile holds it at -K̃c) the step would grow past
+        # the equilibrium between. Speeds that change over a half-width leave a move of δ an
+        # error of δ²/2 half-widths: the tolerance bounds the move itself
+        m.h = h / reach
+        return None
+    return move
 
 
 def _fresh(eq, system, x: np.ndarray, control: Control):
