@@ -2,18 +2,18 @@
 
 An adhesionless equilibrium is unique and does not depend on the loading path, so it needs no
 approach path and no edge energy balance: a uniform-grid spectral solve finds it directly, to a
-stated tolerance. An adhesive scene needs the energy balance at every edge, which only the BEM
-has (the spectral method applies a finite-range cohesive law on its grid, but from the
-adhesionless contact, not along the loading path, so it serves as a cross-check and is asked
-for by name). When the spectral method cannot reach the requested tolerance on the largest grid
-it allows, the BEM finishes the job seeded with the grid's contact set (where the BEM does not
-converge within :data:`FINISH_RESTARTS` contact-set changes, the grid's converged answer stands,
-with its estimate); when the grid solve does
-not converge at all (a very stiff solid at ζ ~ 1, whose trailing-edge layer the grid does not
-resolve), the BEM solves the scene from the caller's start. The other way round, when the BEM
-does not converge on an adhesive scene (or estimates its error above the tolerance) and the
-scene has a finite-range law that the grid applies, the spectral method solves it, and its
-answer is returned when it meets the tolerance: the events say which method ran and why.
+stated tolerance. An adhesive scene needs the energy balance at every edge, which only the BEM has
+(the spectral method applies a finite-range cohesive law on its grid, but from the adhesionless
+contact, not along the loading path, so it serves as a cross-check and is asked for by name). When
+the spectral method cannot reach the requested tolerance on the largest grid it allows, the BEM
+finishes the job seeded with the grid's contact set (where the BEM does not converge within
+:data:`FINISH_RESTARTS` contact-set changes, the grid's converged answer stands, with its
+estimate); when the grid solve does not converge at all (a very stiff solid at ζ ~ 1, whose
+trailing-edge layer the grid does not resolve), the BEM solves the scene from the caller's start.
+The other way round, when the BEM does not converge on an adhesive scene (or estimates its error
+above the tolerance) and the scene has a finite-range law that the grid applies, the spectral
+method solves it, and its answer is returned when it meets the tolerance: the events say which
+method ran and why.
 """
 from __future__ import annotations
 

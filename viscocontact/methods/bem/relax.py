@@ -1,10 +1,10 @@
 """The jump of a contact whose branch of equilibria has ended: overdamped edge motion.
 
-Past a fold (a speed or a load at which its contact set has no equilibrium nearby) a contact
-moves on its own until it finds one. A steady-state model has no dynamics of that motion, so the
-rule is stated: every edge moves outward at a speed proportional to minus its residual (the
-imbalance of its energy release rate against the work of adhesion, the residual of the
-Griffith balance), at fixed speed ζ and fixed control, until the edges stop,
+Past a fold (a speed or a load at which its contact set has no equilibrium nearby) a contact moves
+on its own until it finds one. A steady-state model has no dynamics of that motion, so the rule is
+stated: every edge moves outward at a speed proportional to minus its residual (the imbalance of
+its energy release rate against the work of adhesion, the residual of the Griffith balance), at
+fixed speed ζ and fixed control, until the edges stop,
 
     dX_i/dt = -o_i r_i(X),   o_i = +1 for a right edge, -1 for a left one,
 
@@ -12,13 +12,12 @@ so that an edge whose residual is negative (it would advance) advances, and one 
 residual recedes. The flow is integrated by linearly implicit Euler steps, ``(I/h + O J) δ = -O r``
 (``J`` refreshed after a rejected step and every :data:`JACOBIAN_AGE` steps), with the step ``h``
 chosen so that each step's local error, ``h²/2·Ẍ`` estimated as ``h/2`` times the change of the
-edges' speed over the step (one residual a step), is within ``tolerance`` of its contact's
-half-width (or of the mean half-width, when that is larger; a step after a rejected one does not
-grow, and the growth of the error over the last step is taken to go on), and so that no edge
-moves further than ``√(2·tolerance)`` of that scale (the error of a move over which the speed
-changes within a half-width; the ends alone do not see a residual that is flat between them);
-contacts that meet
-merge, contacts that narrow below the shortest length the mesh resolves detach, contacts that
+edges' speed over the step (one residual a step), is within ``tolerance`` of its contact's half-
+width (or of the mean half-width, when that is larger; a step after a rejected one does not grow,
+and the growth of the error over the last step is taken to go on), and so that no edge moves
+further than ``√(2·tolerance)`` of that scale (the error of a move over which the speed changes
+within a half-width; the ends alone do not see a residual that is flat between them); contacts that
+meet merge, contacts that narrow below the shortest length the mesh resolves detach, contacts that
 close over the period close where full contact can be the state
 (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
 incompressible solid below its closing penetration a gap of the volume the penetration fixes stays
