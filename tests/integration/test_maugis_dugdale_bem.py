@@ -460,30 +460,6 @@ def test_a_contact_splits_where_its_tension_exceeds_the_cohesive_stress():
     assert tensile_split(SimpleNamespace(mesh=mesh, sigma=-np.cos(x)), strength=0.0)[0] is None
 
 
-def test_a_contact_opens_around_its_largest_tension_and_its_pressed_hump_stays():
-    """Two stretches above σ̃0 on either side of a compressed hump (campaign seed 40's merged
-    contact): the contact opens over the stretch of the larger tension only, and the hump stays
-    in contact (opened from the first overloaded element to the last, the hump penetrated the
-    profile and the parts merged again)."""
-    from types import SimpleNamespace
-
-    from viscocontact.contact.mesh import MeshSpec, build_mesh
-    from viscocontact.methods.bem.checks import tensile_split
-
-    mesh = build_mesh(np.array([-1.0, 1.0]), MeshSpec(elements=64))
-    x = mesh.mid
-    left, right = np.abs(x + 0.4) < 0.1, np.abs(x - 0.4) < 0.1
-    sigma = np.where(left, 1.2, np.where(right, 1.5, -np.cos(x)))
-    fields = SimpleNamespace(mesh=mesh, sigma=sigma)
-    split, where, tension = tensile_split(fields, strength=1.0)
-    assert split is not None and len(split) == 4 and where[0][0] == 0
-    assert split[1:3] == pytest.approx([mesh.left[right][0], mesh.right[right][-1]])
-    assert tension == pytest.approx(0.5 / 1.5)
-    # widened (after the parts merged again), the opening stays short of the hump
-    wide = tensile_split(fields, widen=True, strength=1.0)[0]
-    assert np.all(np.diff(wide) > 0) and wide[1] > 0.0
-
-
 def _rough_md_range(h0_nm: float):
     """:func:`_rough_md` with zones of range ``h0_nm`` nanometres."""
     from pathlib import Path

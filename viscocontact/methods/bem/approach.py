@@ -145,6 +145,10 @@ class Approach:
             return self.closed(state, None, target)
         if not state.converged:
             return state
+        if self.reached(state, target):
+            # the first contact snapped in at the target itself (zero load): the motion's
+            # landing is an intermediate state, solved to the target's tolerance from there
+            return self.eq.solve(state.edges, target)
         return self.climb(state, target)
 
     def pressed(self, edges, d0: float, target: Control) -> State:
@@ -207,8 +211,10 @@ class Approach:
         _record(eq.log, "first hold", penetration=hi)
         if landing.outcome is Outcome.FULL_CONTACT:
             return self.closed(landing, None, target)
-        if not landing.converged or self.reached(landing, target):
+        if not landing.converged:
             return landing
+        if self.reached(landing, target):
+            return self.eq.solve(landing.edges, target)
         return self.climb(landing, target)
 
     def at_once(self, edges, target: Control) -> State:

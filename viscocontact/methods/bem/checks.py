@@ -141,17 +141,12 @@ class Checks:
 def tensile_split(fields, widen: bool = False, strength: float = 0.0):
     """Split contacts that carry more tension inside than the interface holds (an adhesionless
     solid none, a finite-range law its cohesive stress ``strength``): the new edges, for each
-    contact split its index and the middle of its opening, and the largest tension beyond
-    ``strength`` as a fraction of the largest stress (``None, [], 0.0`` without).
+    contact split its index and the middle of its overloaded stretch, and the largest tension
+    beyond ``strength`` as a fraction of the largest stress (``None, [], 0.0`` without).
 
-    A contact opens over the stretch of overloaded elements around its largest tension, whose
-    ends are the new inner edges; another overloaded stretch of it opens in a later split if
-    its tension remains. (Opened from the first overloaded element to the last, a contact with
-    two tensile shoulders around a compressed hump lost the hump, which then penetrated the
-    profile, and the parts merged again: campaign seed 40. Opened at every stretch at once, a
-    stress that alternates in sign from element to element split it into hundreds.) ``widen``
-    moves each end out by half the stretch's width (at most halfway to the contact's edges),
-    for a split whose parts merged again."""
+    The new inner edges are the ends of the stretch; ``widen`` moves each out by half the
+    stretch's width (at most halfway to the contact's edges), for a split whose parts merged
+    again."""
     mesh = fields.mesh
     sig = fields.sigma
     scale = np.max(np.abs(sig)) if sig.size else 0.0
@@ -163,9 +158,8 @@ def tensile_split(fields, widen: bool = False, strength: float = 0.0):
         inner[3:-3] = s[3:-3] > 1e-6 * scale
         if inner.any():
             tension = max(tension, float(np.max(s[3:-3])) / scale)
-            peak = 3 + int(np.argmax(s[3:-3]))
-            first, last = next((f, k) for f, k in _runs(inner) if f <= peak <= k)
-            lo, hi = mesh.left[sl][first], mesh.right[sl][last]
+            idx = np.flatnonzero(inner)
+            lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
             if widen:
                 a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
                 w = 0.5 * (hi - lo)
@@ -175,9 +169,3 @@ def tensile_split(fields, widen: bool = False, strength: float = 0.0):
         else:
             out += [mesh.edges[2 * j], mesh.edges[2 * j + 1]]
     return (np.array(out), where, tension) if where else (None, [], 0.0)
-
-
-def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
-    """The first and last index of every run of ``True`` in ``mask``."""
-    edges = np.diff(np.concatenate([[0], mask.astype(np.int8), [0]]))
-    return list(zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1))

@@ -35,7 +35,7 @@ the rest level); where the equilibrium solve finds no root at rest, the motion g
 Where the profile penetrates at its root, contacts are born there, at zero size, and the motion
 goes on with them (a born contact grows as every edge moves); where a contact at rest carries more
 tension than the interface holds (any, without adhesion; the cohesive stress σ̃0 under a cohesive
-law), it opens over the stretch around its largest tension and the motion goes on with its parts.
+law), it splits there and the motion goes on with its parts.
 Where the parts merge again and split at the same place a third time, the tension is a nearly
 vanishing stress whose sign the mesh does not resolve: the contact is refined there, as the
 equilibrium solve refines it (:func:`~.restarts.refined_where_alternating`; in an intermediate
@@ -363,16 +363,16 @@ class Relaxation:
         the contacts born where every contact detached and the profile penetrates."""
         if m.r is None or m.J is None:
             return self._failed(m.x, "met a contact set without a valid field")
-        move = _proposed(m, self.tolerance)
-        if move is None:
+        proposed = _proposed(m, m.r, m.J, self.tolerance)
+        if proposed is None:
             return None
-        h = m.h
+        move, h = proposed
         landed, changed, reason, full = repair(_vanishing(m.x, m.x + move), MIN_WIDTH, MIN_GAP)
         if full and not self.closed.possible(control):
             # full contact is no state here (the load it cannot carry, or the gap volume that a
             # penetration fixes on an incompressible solid): the step overshot a gap that the
             # motion narrows towards its equilibrium width
-            m.h, m.J, m.rejected = 0.25 * m.h, None, True
+            m.h, m.J, m.rejected = 0.25 * h, None, True
             return None
         if full or not landed.size:
             return self._ended(landed, full, control)
@@ -399,7 +399,7 @@ class Relaxation:
                 return self._failed(m.x, "met a contact set without a valid field ("
                                          f"{self.eq.limitation or 'no field'})")
             # no field at the step's end (a Maugis-Dugdale zone's equations): a quarter step
-            m.h *= 0.25 if r is None else max(0.2, 0.9 * np.sqrt(self.tolerance / error))
+            m.h = h * (0.25 if r is None else max(0.2, 0.9 * np.sqrt(self.tolerance / error)))
             m.J, m.rejected = None, r is not None
             return None
         _accepted(m, h, error, self.tolerance)
@@ -452,17 +452,19 @@ class Relaxation:
         return State.no_contact()
 
 
-def _proposed(m: "_Motion", tolerance: float) -> np.ndarray | None:
-    """The move of the motion's next step, its length ``m.h`` set; None when the step is to
-    be tried again shorter (``m.h`` shortened)."""
-    if m.h is None:         # the first step moves the fastest edge a twentieth of a scale
-        m.h = 0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(m.r), 1e-300)))
+def _proposed(m: "_Motion", r: np.ndarray, J: np.ndarray,
+              tolerance: float) -> tuple[np.ndarray, float] | None:
+    """The move of the motion's next step from its residual ``r`` and Jacobian ``J``, and its
+    length (also ``m.h``); None when the step is to be tried again shorter (``m.h``
+    shortened)."""
+    h = (0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(r), 1e-300))) if m.h is None
+         else m.h)          # the first step moves the fastest edge a twentieth of a scale
     # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign past
     # 2/h): the step resolves the growth of every unstable mode of the motion
-    m.h = h = min(m.h, UNSTABLE_STEP / _growth(m.J))
-    move = _step(m.r, m.J, h)
+    m.h = h = min(h, UNSTABLE_STEP / _growth(J))
+    move = _step(r, J, h)
     if move is None:
-        m.h, m.J = 0.25 * m.h, None
+        m.h, m.J = 0.25 * h, None
         return None
     reach = float(np.max(np.abs(move) / _scale(m.x))) / np.sqrt(2.0 * tolerance)
     if reach > 1.0:
@@ -472,7 +474,7 @@ def _proposed(m: "_Motion", tolerance: float) -> np.ndarray | None:
         # error of δ²/2 half-widths: the tolerance bounds the move itself
         m.h = h / reach
         return None
-    return move
+    return move, h
 
 
 def _fresh(eq, system, x: np.ndarray, control: Control):
