@@ -145,10 +145,6 @@ class Approach:
             return self.closed(state, None, target)
         if not state.converged:
             return state
-        if self.reached(state, target):
-            # the first contact snapped in at the target itself (zero load): the motion's
-            # landing is an intermediate state, solved to the target's tolerance from there
-            return self.eq.solve(state.edges, target)
         return self.climb(state, target)
 
     def pressed(self, edges, d0: float, target: Control) -> State:
@@ -213,8 +209,6 @@ class Approach:
             return self.closed(landing, None, target)
         if not landing.converged:
             return landing
-        if self.reached(landing, target):
-            return self.eq.solve(landing.edges, target)
         return self.climb(landing, target)
 
     def at_once(self, edges, target: Control) -> State:
@@ -283,7 +277,12 @@ class Approach:
         return state
 
     def climb(self, state: State, target: Control) -> State:
-        """Follow the branch from ``state`` to ``target`` (:class:`~.climb.Climb`)."""
+        """Follow the branch from ``state`` to ``target`` (:class:`~.climb.Climb`). A state
+        already at the target (a first contact that snapped in at a zero-load target, a first
+        hold at the target penetration) is a motion's landing, an intermediate state: it is
+        solved to the target's tolerance from there."""
+        if self.reached(state, target):
+            return self.eq.solve(state.edges, target)
         return Climb(self, state, target).run()
 
     @staticmethod

@@ -12,9 +12,9 @@ so that an edge whose residual is negative (it would advance) advances, and one 
 residual recedes. The flow is integrated by linearly implicit Euler steps, ``(I/h + O J) δ = -O r``
 (``J`` refreshed after a rejected step and every :data:`JACOBIAN_AGE` steps), with the step ``h``
 chosen so that each step's local error, ``h²/2·Ẍ`` estimated as ``h/2`` times the change of the
-edges' speed over the step (one residual a step), is within ``tolerance`` of its contact's half-
-width (or of the mean half-width, when that is larger; a step after a rejected one does not grow,
-and the growth of the error over the last step is taken to go on), and so that no edge moves
+edges' speed over the step (one residual a step), is within ``tolerance`` of its contact's
+half-width (or of the mean half-width, when that is larger; a step after a rejected one does not
+grow, and the growth of the error over the last step is taken to go on), and so that no edge moves
 further than ``√(2·tolerance)`` of that scale (the error of a move over which the speed changes
 within a half-width; the ends alone do not see a residual that is flat between them); contacts that
 meet merge, contacts that narrow below the shortest length the mesh resolves detach, contacts that
@@ -35,16 +35,15 @@ the rest level); where the equilibrium solve finds no root at rest, the motion g
 Where the profile penetrates at its root, contacts are born there, at zero size, and the motion
 goes on with them (a born contact grows as every edge moves); where a contact at rest carries more
 tension than the interface holds (any, without adhesion; the cohesive stress σ̃0 under a cohesive
-law), it splits there and the motion goes on with its parts.
-Where the parts merge again and split at the same place a third time, the tension is a nearly
-vanishing stress whose sign the mesh does not resolve: the contact is refined there, as the
-equilibrium solve refines it (:func:`~.restarts.refined_where_alternating`; in an intermediate
-motion too, which has no shorter step to get past it), and the motion goes on. Where every contact
-detaches while the profile penetrates the undeformed solid, contacts are born there and the motion
-goes on; born again where they were, the motion is periodic (no steady state). Where the steps
-creep to the end of the model's reach (no field past it; :data:`WALL`), the motion ends there, not
-converged. So merges, detachments, births and splits all happen on the way, as the motion makes
-them.
+law), it splits there and the motion goes on with its parts. Where the parts merge again and split
+at the same place a third time, the tension is a nearly vanishing stress whose sign the mesh does
+not resolve: the contact is refined there, as the equilibrium solve refines it
+(:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which has no shorter
+step to get past it), and the motion goes on. Where every contact detaches while the profile
+penetrates the undeformed solid, contacts are born there and the motion goes on; born again where
+they were, the motion is periodic (no steady state). Where the steps creep to the end of the
+model's reach (no field past it; :data:`WALL`), the motion ends there, not converged. So merges,
+detachments, births and splits all happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
