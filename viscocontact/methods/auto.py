@@ -151,6 +151,12 @@ class Auto(SolutionMethod):
         if unsupported is not None:
             result.extras["events"].append(f"the spectral method was not tried: {unsupported}")
             return result
+        # the grid reaches its cohesive equilibrium from the adhesionless contact, not along the
+        # approach: a converged answer short of the tolerance is first refined on its own branch
+        result = self._refined(problem, result, fields, prepared)
+        why = _shortfall(result, self.tolerance)
+        if why is None:
+            return result
         logger.info("auto: method spectral: the bem solve %s", why)
         grid = spectral.solve(problem, fields=fields, prepared=prepared)
         if _shortfall(grid, self.tolerance) is None or (
@@ -165,6 +171,39 @@ class Auto(SolutionMethod):
         result.extras["events"].append(
             f"the spectral method, tried after the bem solve {why}, "
             f"{_shortfall(grid, self.tolerance)}")
+        return result
+
+    def _refined(self, problem, result, fields: bool, prepared):
+        """``result`` of the BEM, solved again from its own edges at the same control on a mesh
+        twice as fine (:func:`~.bem.estimate.finer`) while it converged with an estimate above
+        the tolerance: the same equilibrium, resolved to what the grid would be asked for. A
+        refinement is kept while its estimate falls and its contact set stays; the events say
+        each one. A result that did not converge is returned as it is."""
+        import attrs
+
+        from .bem import BEM
+        from .bem.estimate import finer
+
+        while result.converged and np.isfinite(result.error_estimate) and (
+                result.error_estimate > self.tolerance):
+            disc = finer(problem.discretization)
+            if disc == problem.discretization:
+                break
+            refining = attrs.evolve(problem, discretization=disc)
+            refined = BEM().solve(refining, result, fields=fields, prepared=prepared)
+            kept = (refined.converged and refined.n_contacts == result.n_contacts
+                    and refined.error_estimate < result.error_estimate)
+            events = result.extras["events"]
+            events.append(
+                f"the bem estimated its error at {result.error_estimate:.2g}, above the "
+                f"tolerance {self.tolerance:g}: solved again with {disc.elements} elements per "
+                f"contact, {'kept' if kept else 'not kept'} ("
+                + (f"estimate {refined.error_estimate:.2g})" if refined.converged
+                   else f"{refined.message})"))
+            if not kept:
+                break
+            refined.extras["events"][:0] = events
+            problem, result = refining, refined
         return result
 
     def plan_steps(self, problem, prepared) -> tuple:

@@ -201,3 +201,36 @@ def test_without_the_grid_the_bem_failure_is_reported(starved):
     assert not energy.converged and energy.method == "bem"
     assert any(e.startswith("the spectral method was not tried: adhesive scene")
                for e in energy.extras["events"])
+
+
+def test_a_bem_answer_short_of_the_tolerance_is_refined_on_its_branch():
+    """A converged BEM answer whose estimate (5e-5) is above the tolerance asked (1e-5) is
+    solved again from its own edges on a mesh twice as fine, before the grid (which reaches its
+    equilibrium from the adhesionless contact) is tried: the answer is the finer mesh's solve
+    from first touch (the same history), the change from the coarse answer is within the
+    coarse estimate, and the events say so."""
+    import numpy as np
+    from viscocontact.adhesion import MaugisDugdale
+    from viscocontact.methods.bem.estimate import finer
+    from viscocontact.problem import Discretization
+
+    def scene(**kw):
+        return ContactProblem(profile=Sinusoid(amplitude=0.05), zeta=0.1, solver=Newton(),
+                              rheology=StandardLinearSolid(beta=10.0), mean_pressure=0.1,
+                              adhesion=MaugisDugdale(gamma=2e-5, range=0.005), **kw)
+
+    coarse = scene(method=BEM()).solve()
+    assert 1e-5 < coarse.error_estimate < 1e-4
+    result = scene(method=Auto(tolerance=1e-5)).solve()
+    direct = scene(method=BEM(), discretization=finer(Discretization())).solve()
+    assert result.converged and result.method == "bem"
+    assert result.error_estimate < 1e-5 and direct.error_estimate < 1e-5
+    for name in ("area", "friction"):
+        value, reference = getattr(result, name), getattr(direct, name)
+        # the same root of the same mesh's equations, to the solver's tolerance
+        assert value == pytest.approx(reference, rel=1e-7)
+        scale = max(abs(getattr(coarse, name)), 1e-300)
+        assert abs(getattr(coarse, name) - value) / scale <= coarse.error_estimate
+    assert any("solved again with 128 elements per contact, kept" in e
+               for e in result.extras["events"])
+    assert np.array_equal(result.edges.shape, coarse.edges.shape)
