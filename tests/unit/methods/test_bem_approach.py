@@ -244,3 +244,20 @@ def test_the_gap_closes_where_the_earliest_check_point_outside_both_contact_sets
     checks.gap_outside = gaps.__getitem__
     assert checks.closing("before", "after") == pytest.approx(0.5, rel=1e-12)
     assert checks.closing("before", "open") is None
+
+
+def test_a_merge_is_foreseen_where_the_tangent_closes_a_neck():
+    """Two contacts whose facing edges close on each other along the branch's tangent meet at
+    the fraction of the step where the neck (0.2 wide, closing at 0.8 a step) vanishes; across
+    the period too; none where every neck opens or closes beyond the step."""
+    from viscocontact.methods.bem.climb import merging
+
+    edges = np.array([-1.0, -0.1, 0.1, 1.0])
+    assert merging(edges, np.array([0.0, 0.4, -0.4, 0.0])) == pytest.approx(0.25)
+    # the neck across the period: 2π - 2, closed by 2π - 2 + 0.5 over the step
+    period = 2.0 * np.pi - 2.0
+    assert merging(edges, np.array([-0.5 - period, 0.0, 0.0, 0.0])) == pytest.approx(
+        period / (period + 0.5))
+    assert merging(edges, np.array([0.0, -0.4, 0.4, 0.0])) is None
+    assert merging(edges, np.array([0.0, 0.05, -0.05, 0.0])) is None
+    assert merging(np.array([-1.0, 1.0]), np.array([-0.1, 0.1])) is None

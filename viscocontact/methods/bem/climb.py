@@ -96,7 +96,8 @@ class Climb:
                          budget=path.budget, refine=last, polish=last,
                          probation=path.probation, pace=path.pace,
                          reduction=0.0 if last else STEP_REDUCTION,
-                         changes=not eq.adhesive)    # (an adhesionless root is unique)
+                         changes=not eq.adhesive,    # (an adhesionless root is unique)
+                         corrector=True)
         event = self.event(state, start, trial)
         if (event is None and self.by_depth and trial.fields.mean_pressure > self.target.value
                 and abs(v_next - v) > opt.smallest):
@@ -146,7 +147,8 @@ class Climb:
         fields = self.eq.fields_at(start, control)
         if fields is None:
             return v_next
-        places = [self.eq.checks.closing(state.fields, fields)]
+        places = [self.eq.checks.closing(state.fields, fields),
+                  merging(state.edges, tangent * change)]
         fold = self.path.fold_within(state, tangent, start, control, change)
         if fold is not None:
             places.append(fold[0] / abs(change))
@@ -291,6 +293,22 @@ class Climb:
         return v + float(np.sign(change)) * ahead[0]
 
 
+def merging(edges, move) -> float | None:
+    """The fraction of the move ``move`` of ``edges`` (a step along the branch's tangent) at
+    which two neighbouring contacts meet, the earliest; None where no neck closes within it."""
+    x, move = np.asarray(edges, dtype=float), np.asarray(move, dtype=float)
+    if x.size < 4 or move.shape != x.shape:
+        return None
+    necks = np.roll(x, -1)[1::2] - x[1::2]          # right edge j to left edge j + 1
+    necks[-1] += 2.0 * np.pi
+    closing = move[1::2] - np.roll(move, -1)[1::2]
+    meets = closing > 0.0
+    if not np.any(meets):
+        return None
+    place = float(np.min(necks[meets] / closing[meets]))
+    return place if place < 1.0 else None
+
+
 def moved(start, edges) -> float:
     """The largest move from ``start`` to ``edges``, in half-widths of its contact (0 when
     the contact sets differ)."""
@@ -301,4 +319,4 @@ def moved(start, edges) -> float:
     return float(np.max(np.abs(edges - start) / half))
 
 
-__all__ = ["Climb", "moved"]
+__all__ = ["Climb", "merging", "moved"]

@@ -218,8 +218,8 @@ class Relaxation:
         when the solve met a merge (the motion makes those). ``trial``: with the
         :attr:`trial` budgets."""
         eq = self.eq
-        out = eq.solve(x, control, use_fallback=False, changes=False, **self._finish,
-                       **(self.trial if trial else {}))
+        out = eq.solve(x, control, use_fallback=False, changes=False, corrector=True,
+                       **self._finish, **(self.trial if trial else {}))
         if out.change == "birth":
             regions, snapped = eq.born(out.fields)
             new = [v for (a, b, _) in regions for v in (a, b)]

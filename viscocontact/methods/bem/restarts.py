@@ -34,8 +34,10 @@ class Restarts:
 
     def __init__(self, eq, control: Control, *, use_fallback: bool, budget: int | None,
                  refine: bool, polish: bool, fallback_budget: int | None, probation: int,
-                 pace: tuple[float, ...], reduction: float, changes: bool):
+                 pace: tuple[float, ...], reduction: float, changes: bool,
+                 corrector: bool = False):
         self.eq = eq
+        self.solver = eq.corrector if corrector else eq.solver
         self.control = control
         self.use_fallback = use_fallback
         self.refine = refine
@@ -103,11 +105,11 @@ class Restarts:
         if self.fallback_first and eq.fallback is not None:
             self.fallback_first = False
             return eq.fallback.solve(system, edges, self.fallback_tolerances)
-        res = eq.solver.solve(system, edges, call)
+        res = self.solver.solve(system, edges, call)
         if not res.converged and eq.fallback is not None and (self.use_fallback
                                                                or self.just_born):
             eq.log.iterations += res.iterations
-            eq.log.event(f"{type(eq.solver).__name__} stopped ({res.status.value}); "
+            eq.log.event(f"{type(self.solver).__name__} stopped ({res.status.value}); "
                          f"{type(eq.fallback).__name__} takes over")
             start = res.x if np.all(np.isfinite(res.x)) else edges
             res = eq.fallback.solve(system, start, self.fallback_tolerances)
