@@ -13,7 +13,9 @@ trailing-edge layer the grid does not resolve), the BEM solves the scene from th
 The other way round, when the BEM does not converge on an adhesive scene (or estimates its error
 above the tolerance) and the scene has a finite-range law that the grid applies, the spectral
 method solves it, and its answer is returned when it meets the tolerance: the events say which
-method ran and why.
+method ran and why. The grid reaches its cohesive equilibrium from the adhesionless contact,
+another history than the approach's, so a converged BEM answer above the tolerance is first
+solved again on finer meshes from its own edges (:meth:`Auto._refined`).
 """
 from __future__ import annotations
 

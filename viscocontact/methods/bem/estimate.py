@@ -62,14 +62,11 @@ def finer(disc):
     """``disc`` refined the other way round from :func:`fewer_elements` and
     :func:`coarser_zones` at once: twice the elements and the interior resolution, and, with
     edge zones, half the grading's excess ``g - 1`` and half the edge element (each within its
-    allowed range; ``disc`` itself when none can be refined further)."""
-    def capped(value, top):
-        return None if value is None else min(top, value)
-
+    allowed range; equal to ``disc`` when none can be refined further)."""
     return attrs.evolve(
         disc, elements=min(4096, 2 * disc.elements),
-        interior_resolution=capped(None if disc.interior_resolution is None
-                                   else 2.0 * disc.interior_resolution, 64.0),
+        interior_resolution=(None if disc.interior_resolution is None
+                             else min(64.0, 2.0 * disc.interior_resolution)),
         grading=max(1.05, 1.0 + 0.5 * (disc.grading - 1.0)),
         edge_resolution=(None if disc.edge_resolution is None
                          else max(1e-3, 0.5 * disc.edge_resolution)))

@@ -137,10 +137,11 @@ class Path:
 
     @property
     def quick(self) -> bool:
-        """Whether approach steps start from predictions and the solver uses the analytic
-        Jacobians (Newton, Broyden, nonlinear CG): then a solve that has not converged in a few
-        evaluations is near a fold. A march without Jacobians (bisection) takes 20-60
-        evaluations a step and keeps the full budgets."""
+        """Whether approach steps start from predictions and their corrector
+        (:attr:`Equilibrium.corrector <.equilibrium.Equilibrium.corrector>`) uses the analytic
+        Jacobians: then a solve that has not converged in a few evaluations is near a fold. A
+        march without Jacobians (bisection, the corrector of a model without derivatives)
+        takes 20-60 evaluations a step and keeps the full budgets."""
         return self.predict and self.eq.analytic and self.eq.jacobian_solver
 
     def tangent(self, state: State, load: bool) -> np.ndarray | None:
