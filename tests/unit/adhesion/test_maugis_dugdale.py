@@ -370,3 +370,25 @@ def test_a_zone_without_a_root_whose_neck_cannot_fill_has_no_field():
                                       Control.load_of(-0.18407468975388852))
     assert not np.any(np.isfinite(r))
     assert "cannot fill the neck" in solve.equilibrium.limitation
+
+
+def test_zones_at_their_round_off_floor_are_taken(monkeypatch):
+    """With the convergence tests made unreachable (tolerances of zero), the iteration runs
+    out at the round-off of its equations: that state is taken where its equations are within
+    four times their measured floor, and its zones are the converged ones'; cut off before it
+    gets there (two iterations), it is no state and the iteration says so."""
+    import viscocontact.contact.cohesive as cohesive
+    from viscocontact.contact.cohesive import ZoneError
+
+    ref, state, model, kernel, shape, base = _reference_field(10.0)
+    arguments = dict(stress=model.strength(0.1), control={"penetration": state.penetration},
+                     start=np.full(2, 1e-3))
+    converged = zone_fields(base, kernel, **arguments)
+    monkeypatch.setattr(cohesive, "EDGE_TOLERANCE", 0.0)
+    monkeypatch.setattr(cohesive, "NOISE", 0.0)
+    monkeypatch.setattr(cohesive, "EDGE_STEP", 0.0)
+    floor = zone_fields(base, kernel, **arguments)
+    assert np.allclose(floor.loads.width, converged.loads.width, rtol=1e-9)
+    monkeypatch.setattr(cohesive, "ITERATIONS", 2)
+    with pytest.raises(ZoneError, match="did not converge in 2 Newton iterations"):
+        zone_fields(base, kernel, **arguments)
