@@ -414,10 +414,9 @@ class _ZoneNewton:
 
     # ---- the iteration -------------------------------------------------------------------------
     def solve(self, start: np.ndarray, full: np.ndarray | None) -> FieldSolution:
-        """Iterate from the zone lengths ``start`` and the necks ``full`` filled at the start
-        (:func:`zone_fields`)."""
+        """Iterate from the zone lengths ``start`` and the necks ``full`` filled there."""
         self._start(start, full)
-        best: tuple | None = None             # (size, t, fields, k, full) of the best state
+        best = None                           # (size, t, fields, k, full) of the best state
         for _ in range(ITERATIONS):
             active = ~((self.t == 0.0) & (self.k <= 0.0)) & ~self.full
             if self._converged(active):
@@ -437,27 +436,7 @@ class _ZoneNewton:
                 continue
             if self._advance(idx, step):
                 return self.finished(self.fields)
-        if best is not None and self._at_floor(best):
-            return self.finished(self.fields)
-        raise ZoneError(f"the bounded-stress equations of the zones did not converge in "
-                        f"{ITERATIONS} Newton iterations (largest K̃ {np.max(np.abs(self.k)):.3g})")
-
-    def _at_floor(self, best: tuple) -> bool:
-        """Whether the best state of an iteration that ran out, ``(size, t, fields, k, full)``,
-        holds its equations to their round-off floor: within four times the largest change of
-        an equation when every zone's ``√d`` moves by a relative 1e-13 (one evaluation, far
-        below any physical change); the state is then taken. On a contact 1.5e-4 wide born
-        between zones of 0.002-0.009 (campaign seed 273) ``K̃`` wandered at 1-6e-9 for 60
-        iterations, five times :data:`NOISE` of its scale."""
-        size, t, fields, k, full = best
-        _, moved = self.evaluate(t * (1.0 + 1e-13))
-        active = ~((t == 0.0) & (k <= 0.0)) & ~full
-        with np.errstate(invalid="ignore"):
-            floor = float(np.max(np.abs(moved - k)[active])) if np.any(active) else 0.0
-        if not (np.isfinite(floor) and size <= 4.0 * floor):
-            return False
-        self.t, self.fields, self.k, self.full = t, fields, k, full
-        return True
+        return _run_out(self, best)
 
     def _start(self, start: np.ndarray, full: np.ndarray | None) -> None:
         """The state at the start: ``√d`` of ``start`` within half the room, the necks of
@@ -704,6 +683,26 @@ class ZoneDerivatives:
     intensity: np.ndarray
     gaps: np.ndarray
     pressure: np.ndarray
+
+
+def _run_out(zn: "_ZoneNewton", best: tuple | None) -> FieldSolution:
+    """The field of an iteration ``zn`` that ran out of iterations: its best state ``(size, t,
+    fields, k, full)`` where that holds its equations to their round-off floor, within four
+    times the largest change of an equation when every zone's ``√d`` moves by a relative 1e-13
+    (one evaluation, far below any physical change); else a :class:`ZoneError`. On a contact
+    1.5e-4 wide born between zones of 0.002-0.009 (campaign seed 273) ``K̃`` wandered at
+    1-6e-9 for 60 iterations, five times :data:`NOISE` of its scale."""
+    if best is not None:
+        size, t, fields, k, full = best
+        _, moved = zn.evaluate(t * (1.0 + 1e-13))
+        active = ~((t == 0.0) & (k <= 0.0)) & ~full
+        with np.errstate(invalid="ignore"):
+            floor = float(np.max(np.abs(moved - k)[active])) if np.any(active) else 0.0
+        if np.isfinite(floor) and size <= 4.0 * floor:
+            zn.t, zn.fields, zn.k, zn.full = t, fields, k, full
+            return zn.finished(fields)
+    raise ZoneError(f"the bounded-stress equations of the zones did not converge in "
+                    f"{ITERATIONS} Newton iterations (largest K̃ {np.max(np.abs(zn.k)):.3g})")
 
 
 def zone_derivatives(fields: FieldSolution, dfields, *, stress: float,
