@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from .path import STEP_REDUCTION
-from .sets import Control
+from .sets import Control, necks
 from .state import Outcome, State
 
 
@@ -296,16 +296,13 @@ class Climb:
 def merging(edges, move) -> float | None:
     """The fraction of the move ``move`` of ``edges`` (a step along the branch's tangent) at
     which two neighbouring contacts meet, the earliest; None where no neck closes within it."""
-    x, move = np.asarray(edges, dtype=float), np.asarray(move, dtype=float)
-    if x.size < 4 or move.shape != x.shape:
+    if np.size(edges) < 4 or np.shape(move) != np.shape(edges):
         return None
-    necks = np.roll(x, -1)[1::2] - x[1::2]          # right edge j to left edge j + 1
-    necks[-1] += 2.0 * np.pi
-    closing = move[1::2] - np.roll(move, -1)[1::2]
+    width, closing = necks(edges, move)
     meets = closing > 0.0
     if not np.any(meets):
         return None
-    place = float(np.min(necks[meets] / closing[meets]))
+    place = float(np.min(width[meets] / closing[meets]))
     return place if place < 1.0 else None
 
 

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...contact.topology import TWO_PI, repair
-from .sets import MIN_GAP, MIN_WIDTH, Control
+from ...contact.topology import repair
+from .sets import MIN_GAP, MIN_WIDTH, Control, necks
 from .state import State
 
 #: Residual evaluations allowed to one solver call of an approach step (a converging step takes
@@ -189,9 +189,8 @@ class Path:
             return x
         move = t * change
         half = np.repeat(0.5 * (x[1::2] - x[0::2]), 2)
-        gaps = np.roll(x, -1)[1::2] - x[1::2]            # right edge j to left edge j + 1
-        gaps[-1] += TWO_PI
-        closing = np.maximum(move[1::2] - np.roll(move, -1)[1::2], 0.0)
+        gaps, closing = necks(x, move)
+        closing = np.maximum(closing, 0.0)
         limits = [1.0]
         with np.errstate(divide="ignore"):
             limits.append(float(np.min(half / np.abs(move))))

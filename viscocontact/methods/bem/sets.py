@@ -49,6 +49,16 @@ def inside(x, edges, closed: bool) -> np.ndarray:
     return inside
 
 
+def necks(edges, move) -> tuple[np.ndarray, np.ndarray]:
+    """``(width, closing)`` of every neck, right edge ``j`` to left edge ``j + 1`` (the last
+    across the period): its width between ``edges``, and how much the move ``move`` of the
+    edges narrows it (negative: it widens)."""
+    x, move = np.asarray(edges, dtype=float), np.asarray(move, dtype=float)
+    width = np.roll(x, -1)[1::2] - x[1::2]
+    width[-1] += TWO_PI
+    return width, move[1::2] - np.roll(move, -1)[1::2]
+
+
 def first_touch(shape):
     """Penetration and edges of the first contact at the highest peak of a normalised profile:
     a contact of half-width ``√(2e-3/κ)`` (κ the peak's curvature, at most π/8) and the
