@@ -160,3 +160,72 @@ def test_a_contact_narrower_than_the_mesh_resolves_detaches_while_it_narrows():
     assert out[0:2].tolist() == after[0:2].tolist()              # widening: kept
     assert out[2] == out[3] == pytest.approx(1.0 + 0.2 * w)      # narrowing below: collapsed
     assert out[4:6].tolist() == after[4:6].tolist()              # above the floor: kept
+
+
+class _Edges:
+    """Two edges: the first at rest, the second's residual either jumps from -0.25 to 2e-3
+    across ``AT`` (``jump``) or passes through zero there with the slope 500."""
+
+    AT = 1.0
+
+    def __init__(self, jump: bool):
+        self.jump = jump
+
+    def residual(self, x):
+        d = x[1] - self.AT
+        if not self.jump:
+            return np.array([0.0, 500.0 * d])
+        return np.array([0.0, (2e-3 if d >= 0 else -0.25) + 10.0 * d])
+
+
+def _crossings(system, moving: float = 0.0, changed: bool = False):
+    """The two crossings of the second edge (out, then back) of a motion on ``system`` whose
+    Jacobian's slope is 10, the first edge's residual at ``moving``; :func:`_held` of each."""
+    from viscocontact.methods.bem.relax import _held, _Motion
+
+    def resolved(motion):
+        return 1e-9                              # the solver's tolerance
+
+    inside, outside = np.array([0.0, _Edges.AT - 1e-6]), np.array([0.0, _Edges.AT + 1e-6])
+    m = _Motion(system=system, x=inside, r=system.residual(inside), J=np.diag([1.0, 10.0]))
+    out = []
+    for before, after in ((inside, outside), (outside, inside)):
+        m.x, m.r = before, system.residual(before) + [moving, 0.0]
+        out.append(_held(m, system.residual(after) + [moving, 0.0], after, changed, resolved))
+    return out, m
+
+
+def test_an_edge_that_crosses_a_jump_of_its_residual_both_ways_is_held_there():
+    """A sign change of a residual far larger than its Jacobian predicts, crossed out and back
+    while the other edges are at rest, is bisected: where the change stays as its bracket
+    narrows (a jump) the motion stops with the reason; where it shrinks (a root the Jacobian
+    misjudged), it goes on. While another edge moves (a shrinking contact's unresolved
+    residuals jump too) or the contact set changes, it goes on without bisecting."""
+    (first, why), _ = _crossings(_Edges(jump=True))
+    assert first is None
+    assert why is not None and "jumps across zero (from -0.25 to 0.002" in why
+    assert "outside the model" in why
+    assert _crossings(_Edges(jump=False))[0] == [None, None]
+    assert _crossings(_Edges(jump=True), moving=0.5)[0] == [None, None]
+    out, m = _crossings(_Edges(jump=True), changed=True)
+    assert out == [None, None] and m.jumps == {}
+
+
+def test_a_finite_advance_holds_an_edge_where_its_stress_intensity_changes_sign():
+    """Campaign seed 239 at the penetration where its approach meets it (SLS β = 8785 at
+    ζ = 62, energy balance over δX = 1e-4): the right edge's release over δX reaches the work
+    of adhesion where K̃ changes sign, so its residual jumps across zero there and the motion
+    holds it (outside the model); with δX = 0 the release vanishes with K̃ and the same start
+    converges, the edge further out (docs/edges.md, "An edge held where K̃ changes sign")."""
+    from viscocontact.testing.campaign import draw
+
+    table = draw(239)
+    table["load"] = {"penetration": 0.04555835526402752}
+    start = RelaxFrom([2.0716195, 2.0795354])
+    held = vc.solve(vc.Scene.from_dict(table), initial=start)
+    assert not held.converged
+    assert "holds edge 2" in held.message and "outside the model" in held.message
+    table["adhesion"] = {**table["adhesion"], "edge_perturbation": 0.0}
+    limit = vc.solve(vc.Scene.from_dict(table), initial=start)
+    assert limit.converged and limit.n_contacts == 1
+    assert limit.edges.ravel()[1] > 2.0795354 + 1e-5

@@ -42,15 +42,18 @@ not resolve: the contact is refined there, as the equilibrium solve refines it
 step to get past it), and the motion goes on. Where every contact detaches while the profile
 penetrates the undeformed solid, contacts are born there and the motion goes on; born again where
 they were, the motion is periodic (no steady state). Where the steps creep to the end of the
-model's reach (no field past it; :data:`WALL`), the motion ends there, not converged. So merges,
-detachments, births and splits all happen on the way, as the motion makes them.
+model's reach (no field past it; :data:`WALL`), the motion ends there, not converged; where an
+edge is held at a jump of its residual across zero (:func:`_held`: no root, the flow on both
+sides points at it), it ends there too, saying that the balance has no root (outside the
+model). So merges, detachments, births and splits all happen on the way, as the motion makes
+them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Callable
 
 import attrs
 import numpy as np
@@ -87,6 +90,12 @@ WALL = 1e-12
 #: Accepted steps taken with one Jacobian (linearly implicit Euler stays consistent with an
 #: older one; a rejected step or a new contact set takes a fresh one).
 JACOBIAN_AGE = 8
+#: A change of an edge's residual over an accepted step larger than this many times the change
+#: its Jacobian predicts, across zero, is a jump of the residual (:func:`_held`), not a root.
+JUMP = 10.0
+#: ... and it is a jump where the residual's change across it stays (at least half) while
+#: its bracket is narrowed this many times (:func:`_jump`; a root's change shrinks with it).
+NARROWED = 1024.0
 
 
 @attrs.frozen
@@ -142,6 +151,8 @@ class _Motion:
     tested: float = np.inf              # Newton's contraction is tested again below this max|r|
     track: list = attrs.Factory(list)   # (total width, mean edge position, edges) since the
     #                                     last change of the contact set
+    jumps: dict = attrs.Factory(dict)   # edge -> the signs its residual jumped to across
+    #                                     zero (:func:`_held`)
 
 
 def _scale(x: np.ndarray) -> np.ndarray:
@@ -402,17 +413,17 @@ class Relaxation:
             m.J, m.rejected = None, r is not None
             return None
         _accepted(m, h, error, self.tolerance)
+        held = _held(m, r, landed, changed or after is not m.system, self._resolved)
         m.moved, m.age, m.x, m.r = m.moved + 1, m.age + 1, landed, r
         for kind, word in (("merge", "merge"), ("detachment", "detach")):
             if changed and word in reason:
                 self.eq.log.records.append({"kind": kind, "control": control.value})
-        m.track.append((float(np.sum(landed[1::2] - landed[0::2])), float(np.mean(landed)),
-                        len(landed)))
-        if changed:
-            m.track = m.track[-1:]
+        _tracked(m, landed, changed)
         if after is not m.system:
             m.system, m.J = after, None
             systems.append(after)
+        if held is not None:
+            return self._failed(m.x, held)
         if _travels(m.track):
             return self._failed(m.x, "carries the contacts round the period: no steady "
                                      "state at this control")
@@ -555,6 +566,82 @@ def _local_error(m: "_Motion", r: np.ndarray, changed: bool) -> float:
     if changed or m.h is None or m.r is None:
         return 0.0
     return float(np.max(0.5 * m.h * np.abs(r - m.r) / _scale(m.x)))
+
+
+def _tracked(m: "_Motion", landed: np.ndarray, changed: bool) -> None:
+    """The accepted state's total width, mean edge position and edge count appended to the
+    motion's track (which starts again with a new contact set)."""
+    m.track.append((float(np.sum(landed[1::2] - landed[0::2])), float(np.mean(landed)),
+                    len(landed)))
+    if changed:
+        m.track = m.track[-1:]
+
+
+def _held(m: "_Motion", r: np.ndarray, landed: np.ndarray, changed: bool,
+          resolved: Callable[["_Motion"], float]) -> str | None:
+    """Why the motion stops at an edge held at a jump of its residual across zero, or None.
+
+    A step that changes the sign of an edge's residual by more than :data:`JUMP` times the
+    change its Jacobian predicts may have crossed a discontinuity instead of a root. Once the
+    same edge has crossed it both ways while every other edge is at rest (``max|r|`` within
+    :data:`SETTLED` times ``resolved(m)``, where the motion ends), the last crossing is
+    narrowed down (:func:`_jump`); where the residual keeps its change across a bracket a
+    thousand times narrower, the flow on either side points at a jump (a Filippov equilibrium
+    of the discontinuous motion): the edge stays there, at a residual that does not vanish,
+    and the motion cycles round it. The balance has no root there. With the energy balance
+    over a finite advance δX this is where ``K̃`` changes sign: the residual is signed with
+    ``K̃`` and the release over δX does not vanish with it, and where it reaches the work of
+    adhesion the edge holds there (``docs/edges.md``). The record starts again with each
+    contact set or mesh (``changed``)."""
+    if changed or m.r is None or m.J is None or np.shape(r) != np.shape(m.r):
+        m.jumps = {}
+        return None
+    linear = np.abs(m.J @ (landed - m.x))
+    crossed = (np.sign(r) != np.sign(m.r)) & (np.abs(r - m.r) > JUMP * linear)
+    for i in np.flatnonzero(crossed):
+        sides = m.jumps.setdefault(int(i), set())
+        sides.add(float(np.sign(r[i])))
+        others = float(np.max(np.abs(np.delete(r, i)), initial=0.0))
+        if len(sides) < 2 or others > SETTLED * resolved(m):
+            continue
+        ends = _jump(m.system, landed, int(i), float(m.x[i]))
+        if ends is not None:
+            return (f"holds edge {i + 1} at {landed[i]:.8g}, where its residual jumps across "
+                    f"zero (from {min(ends):.3g} to {max(ends):.3g}) instead of passing "
+                    "through it: its balance has no root there, outside the model "
+                    "(docs/edges.md)")
+    return None
+
+
+def _jump(system, x: np.ndarray, i: int, other: float) -> tuple[float, float] | None:
+    """The residuals of edge ``i`` either side of the jump between its positions ``x[i]`` and
+    ``other`` (the other edges at ``x``), or None where it is a root: the sign change is
+    bisected to a :data:`NARROWED` th of its width, over which a residual with a slope changes
+    by as much less, while a jump keeps at least half its change. None also where an
+    evaluation fails."""
+    lo, hi = sorted((float(x[i]), other))
+    width, values = hi - lo, []
+    for at in (lo, hi):
+        y = x.copy()
+        y[i] = at
+        r = _valid(system.residual, y)
+        if r is None:
+            return None
+        values.append(float(r[i]))
+    change = values[1] - values[0]
+    if values[0] * values[1] >= 0.0:
+        return None
+    while hi - lo > width / NARROWED and hi - lo > 4 * np.spacing(hi):
+        y = x.copy()
+        y[i] = mid = 0.5 * (lo + hi)
+        r = _valid(system.residual, y)
+        if r is None or r[i] == 0.0:
+            return None
+        if (r[i] < 0.0) == (values[0] < 0.0):
+            lo, values[0] = mid, float(r[i])
+        else:
+            hi, values[1] = mid, float(r[i])
+    return (values[0], values[1]) if abs(values[1] - values[0]) >= 0.5 * abs(change) else None
 
 
 def _travels(track: list) -> bool:
