@@ -19,8 +19,9 @@ Method
   :class:`SpectralPrepared`.
 * Solvers (:mod:`~viscocontact.methods.spectral.solvers`): preconditioned Polonsky-Keer conjugate
   gradients when ``A`` is symmetric (elastic, or ζ at a limit), a primal-dual active set with
-  right-preconditioned GMRES otherwise (viscoelastic); load control (``p̃∞`` given) and penetration
-  control (``Δ̃`` given).
+  right-preconditioned GMRES otherwise (viscoelastic), and a Fischer-Burmeister Newton method
+  where the active set fails (a strongly non-symmetric operator); load control
+  (``p̃∞`` given) and penetration control (``Δ̃`` given).
 * Grids (:mod:`~viscocontact.methods.spectral.ladder`): nested iteration from at most 256 cells,
   each grid starting from the previous one's solution; from the first grid with
   ``32·√(1e-3/tolerance)`` cells per shortest wavelength of the profile
@@ -99,10 +100,8 @@ smooth traction (:meth:`AdhesionModel.traction`; :class:`~viscocontact.adhesion.
 is applied cell by cell as a tension at every gap (:mod:`~viscocontact.methods.spectral.traction`).
 
 Limits: adhesive scenes without a cohesive law, short-range laws (use the BEM); contacts narrower than two cells get their cells as
-their extent (the estimate sees them and refines); the active set may fail on very
-non-symmetric operators (an SLS with β >= 50 at ζ of order one;
-:mod:`~viscocontact.methods.spectral.solvers`), and the
-result then says so.
+their extent (the estimate sees them and refines); a grid solve that does not converge (all
+its solvers: :mod:`~viscocontact.methods.spectral.solvers`) says so.
 """
 from .method import Spectral, SpectralPrepared
 

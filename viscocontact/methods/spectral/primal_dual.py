@@ -233,10 +233,8 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         s, stalled = _fraction(p, g, step_p, step_g, stiffness, floor,
                                control.damped or solved[1] != 0, stalled)
         if s is None:
-            p, g, res = _clipped(apply, p, r, delta, None)
-            return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
-                                iterations=it, applications=apps[0], solver=ACTIVE_SET,
-                                message=f"no descent after {it} active-set steps")
+            return _stopped(apply, p, r, delta, it, apps[0],
+                            f"no descent after {it} active-set steps")
         p, g = p + s * step_p, g + s * step_g
         delta += s * step_d
         res = violation(g, p > 0)
@@ -249,10 +247,17 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
                 return GridSolution(pressure=p, penetration=delta, converged=True, residual=res,
                                     iterations=it, applications=apps[0], solver=ACTIVE_SET,
                                     message=f"converged in {it} active-set steps{how}")
-    p, g, res = _clipped(apply, p, r, delta, None)
+    return _stopped(apply, p, r, delta, max_iterations, apps[0],
+                    f"no convergence in {max_iterations} active-set steps")
+
+
+def _stopped(apply, p, heights, delta, iterations: int, applications: int,
+             message: str) -> GridSolution:
+    """The active set stopped, not converged, at ``p`` (clipped at zero) with ``message``."""
+    p, _, res = _clipped(apply, p, heights, delta, None)
     return GridSolution(pressure=p, penetration=delta, converged=False, residual=res,
-                        iterations=max_iterations, applications=apps[0], solver=ACTIVE_SET,
-                        message=f"no convergence in {max_iterations} active-set steps")
+                        iterations=iterations, applications=applications, solver=ACTIVE_SET,
+                        message=message)
 
 
 def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,

@@ -1,6 +1,7 @@
-r"""The two grid solvers of the spectral method: Polonsky-Keer and a primal-dual active set.
+r"""The grid solvers of the spectral method: Polonsky-Keer, a primal-dual active set and a
+Fischer-Burmeister Newton method.
 
-Both solve the discrete contact problem on one grid: pressures ``p_k >= 0``, gaps
+All solve the discrete contact problem on one grid: pressures ``p_k >= 0``, gaps
 ``g_k = (A p)_k - (r̃_k - 1 + Δ̃) >= 0`` and ``p_k g_k = 0``, under load control (``mean(p) = p̃∞``
 given, the penetration ``Δ̃`` a multiplier) or penetration control (``Δ̃`` given). ``A`` is the
 circulant of :mod:`~viscocontact.methods.spectral.operator`.
@@ -25,16 +26,24 @@ circulant of :mod:`~viscocontact.methods.spectral.operator`.
   non-symmetric operators (a step whose Krylov solve fell short is searched at once); after
   :data:`~.primal_dual.STALLED_STEPS` steps in a row that are no descent direction the solve
   stops, not converged. Any ``A``: the viscoelastic operator is not symmetric.
-* :func:`grid_solve` — the one a grid's operator needs.
+* :func:`fischer_burmeister` (:mod:`~viscocontact.methods.spectral.fischer_burmeister`) — a
+  semismooth Newton method on the Fischer-Burmeister function, with a line search on its
+  smooth merit: globally convergent for every rheology (the operator's symmetric part is
+  positive semidefinite), each step a Newton system on the cells that are not plainly free,
+  and a contact set kept over a step solved exactly (the active set's system on it).
+* :func:`grid_solve` — the one a grid's operator needs: Polonsky-Keer for a symmetric
+  operator; else the active set, and where that fails, the Fischer-Burmeister method from the
+  same start, then the active set from the contact set that found.
 
-Both stop on the largest violation of the contact conditions, ``max(max_C |g|, max_{∉C} -g)``,
+All stop on the largest violation of the contact conditions, ``max(max_C |g|, max_{∉C} -g)``,
 in units of the profile amplitude (the heights are normalised to 1), with ``p >= 0``.
 
 Limits. ``A`` has a positive definite symmetric part for every rheology (``Re K > 0``), so the
 discrete problem has one solution; the active-set method finds it on the thesis's scenes
-(β = 10) and on every scene tried with ``tan δ`` up to 2.5 (an SLS with β <= 30), but a
-standard linear solid with β = 50-100 at ζ of order one (``|Im Λ|/Re Λ`` near 5) failed in 1
-of 18 and 4 of 18 rough scenes (``benchmarks/spectral.py``, the reason in the result's message).
+(β = 10) and on every scene tried with ``tan δ`` up to 2.5 (an SLS with β <= 30). Past that
+(β = 1e3-1e4 at ζ of order one, ``|Im Λ|/Re Λ`` up to 40 on the grid) its Newton steps cycle,
+and its damped steps made so little descent that 7 and 12 of 24 rough scenes failed at β = 1e3
+and 1e4 (``benchmarks/spectral.py --betas``); the Fischer-Burmeister method solves them.
 
 References
 ----------
@@ -54,18 +63,24 @@ from __future__ import annotations
 import attrs
 
 from .conjugate_gradients import FLAT, POLONSKY_KEER, polonsky_keer
+from .fischer_burmeister import FISCHER_BURMEISTER, fischer_burmeister
 from .grid_solution import GridSolution, circulant_diagonal, violation
 from .operator import invert
 from .primal_dual import (ACTIVE_SET, LINE_SEARCH_SMALLEST, LOOSE_KRYLOV, UNDAMPED_STEPS,
                           active_set)
 
 __all__ = ["GridSolution", "violation", "circulant_diagonal", "polonsky_keer", "active_set",
-           "grid_solve", "POLONSKY_KEER", "ACTIVE_SET", "FLAT", "LOOSE_KRYLOV",
-           "LINE_SEARCH_SMALLEST", "UNDAMPED_STEPS", "PRESOLVE"]
+           "fischer_burmeister", "grid_solve", "POLONSKY_KEER", "ACTIVE_SET", "FISCHER_BURMEISTER",
+           "FLAT", "LOOSE_KRYLOV", "LINE_SEARCH_SMALLEST", "UNDAMPED_STEPS", "PRESOLVE"]
 
 #: Tolerance of the Polonsky-Keer solve for the operator's symmetric part that starts an active
 #: set from far (:func:`grid_solve`).
 PRESOLVE = 1e-6
+#: Most steps of the Fischer-Burmeister method after a failed active set (:func:`grid_solve`):
+#: 8-21 (once 64) on the thesis's rough profile with β = 1e3-1e4 where it converges, about 100
+#: creeping ones on a thin free layer's 8192- and 16384-cell grids (campaign seed 226, 8 and
+#: 18 s), where the ladder's last converged grid is the answer instead, with its estimate.
+FISCHER_BURMEISTER_STEPS = 40
 
 
 def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
@@ -92,7 +107,28 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
                               **dict(common, tolerance=PRESOLVE))
         start, start_penetration = first.pressure, first.penetration
         its, apps = first.iterations, first.applications
-    sol = active_set(circulant, heights, start=start, start_penetration=start_penetration,
-                     krylov_tolerance=krylov_tolerance, max_iterations=max_updates, **common)
-    return attrs.evolve(sol, iterations=sol.iterations + its,
-                        applications=sol.applications + apps)
+    common.update(start_penetration=start_penetration)
+    sol = active_set(circulant, heights, start=start, krylov_tolerance=krylov_tolerance,
+                     max_iterations=max_updates, **common)
+    its, apps = its + sol.iterations, apps + sol.applications
+    if not sol.converged:
+        # the active set's damped steps make little descent on a strongly non-symmetric
+        # operator: the globally convergent Newton method on the Fischer-Burmeister function
+        # from the same start, and where its merit stalls at the round-off of a degenerate edge
+        # cell, the active set from the contact set it found
+        fb = fischer_burmeister(circulant, heights, start=start,
+                                max_iterations=min(max_updates, FISCHER_BURMEISTER_STEPS),
+                                **common)
+        its, apps = its + fb.iterations, apps + fb.applications
+        why = f"after the active set: {sol.message}"
+        if fb.converged:
+            return attrs.evolve(fb, message=f"{fb.message} ({why})", iterations=its,
+                                applications=apps)
+        last = active_set(circulant, heights, start=fb.pressure,
+                          krylov_tolerance=krylov_tolerance, max_iterations=max_updates,
+                          **dict(common, start_penetration=fb.penetration))
+        its, apps = its + last.iterations, apps + last.applications
+        found = f"from the Fischer-Burmeister method's contact set ({fb.message})"
+        sol = (attrs.evolve(last, message=f"{last.message} {found}, {why}") if last.converged
+               else attrs.evolve(sol, message=f"{sol.message}; {last.message} {found}"))
+    return attrs.evolve(sol, iterations=its, applications=apps)
