@@ -40,8 +40,7 @@ import numpy as np
 from ...deadline import check as check_deadline
 from .grid_solution import GridSolution, circulant_diagonal, violation
 from .krylov import gmres
-from .operator import convolve
-from .primal_dual import _restricted_solve
+from .primal_dual import _active_start, _restricted_solve, counted_products
 
 FISCHER_BURMEISTER = "Fischer-Burmeister Newton"
 #: Armijo's sufficient decrease of ``Ψ`` (a fraction of the decrease the linear model predicts).
@@ -63,23 +62,11 @@ def fischer_burmeister(circulant, heights, *, mean_pressure=None, penetration=No
     lam = np.asarray(circulant.eigenvalues)
     r = np.asarray(heights, dtype=float)
     load = mean_pressure is not None
-    count = [0]
-
-    def apply(v, spectrum=lam):
-        count[0] += 1
-        return convolve(v, spectrum, workers)
-
+    apply, count = counted_products(lam, workers)
     c = 1.0 / circulant_diagonal(lam.real)
-    p = np.maximum(np.zeros(r.size) if start is None else np.ravel(start).astype(float), 0.0)
-    if not p.any():
-        p[int(np.argmax(r))] = 1.0
-    if load:
-        p *= mean_pressure / p.mean()
-    u = apply(p)
-    delta = (float(penetration) if not load else float(start_penetration)
-             if start_penetration is not None else 1.0 + float(np.mean((u - r)[p > 0])))
+    p, delta, g = _active_start(apply, r, np.zeros(r.size) if start is None else np.ravel(start),
+                                mean_pressure, penetration, start_penetration)
     system = _System(apply, lam, circulant.inverse, c, load, restart)
-    g = u - (r - 1.0 + delta)
     phi = _phi(p, c * g)
     first, stuck = float(np.linalg.norm(phi)), False
     found = None

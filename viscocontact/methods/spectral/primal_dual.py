@@ -134,6 +134,18 @@ def _update(solved, idx, p, g, delta, heights, load: bool):
     return step_p, step_d, step_g
 
 
+def counted_products(spectrum, workers: int = 1):
+    """``(apply, count)``: ``apply(v, spectrum=spectrum)`` the circulant product by FFT, and
+    ``count`` the one-element list of the products taken."""
+    count = [0]
+
+    def apply(v, spectrum=spectrum):
+        count[0] += 1
+        return convolve(v, spectrum, workers)
+
+    return apply, count
+
+
 def _active_start(apply, heights, start, mean_pressure, penetration, start_penetration):
     """The active set's starting pressure, penetration and gaps."""
     p = np.maximum(np.asarray(start, dtype=float), 0.0)
@@ -211,12 +223,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     inv = _preconditioner(circulant)
     r = np.asarray(heights, dtype=float)
     load = mean_pressure is not None
-    apps = [0]
-
-    def apply(v, spectrum=lam):
-        apps[0] += 1
-        return convolve(v, spectrum, workers)
-
+    apply, apps = counted_products(lam, workers)
     stiffness = 1.0 / circulant_diagonal(lam.real)     # pressure that a unit gap is worth
     singular_when_closed = not load and lam.flat[0] == 0
     p, delta, g = _active_start(apply, r, start, mean_pressure, penetration, start_penetration)
