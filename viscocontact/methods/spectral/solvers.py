@@ -92,7 +92,9 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
     it is symmetric, else :func:`active_set`, started with ``presolve`` from the solution for the
     operator's symmetric part (to :data:`PRESOLVE`, itself from ``start``): from a start far
     from the solution (none, or another problem's) the active set needs damped steps by the
-    dozen. The counts add up over both solves."""
+    dozen. Where the active set fails, :func:`fischer_burmeister` from the same start (at most
+    :data:`FISCHER_BURMEISTER_STEPS` steps), then the active set from the contact set that
+    found. The counts add up over every solve."""
     common = dict(mean_pressure=mean_pressure, penetration=penetration, tolerance=tolerance,
                   workers=workers)
     if circulant.symmetric:
