@@ -1,6 +1,8 @@
 """The jump rule: the edges' overdamped motion lands where Johnson's wavy contact says, on the
 side of the unstable root it starts from, and the landing does not depend on the integration
 tolerance."""
+import contextlib
+
 import attrs
 import numpy as np
 import pytest
@@ -170,6 +172,10 @@ class _Edges:
 
     def __init__(self, jump: bool):
         self.jump = jump
+
+    @contextlib.contextmanager
+    def probing(self):
+        yield self
 
     def residual(self, x):
         d = x[1] - self.AT

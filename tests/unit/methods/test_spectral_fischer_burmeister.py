@@ -66,3 +66,24 @@ def test_on_a_mild_operator_it_gives_the_active_sets_answer(control):
     stiffness = 1.0 / np.mean(op.eigenvalues.real)
     assert np.max(np.abs(sol.pressure - ref.pressure)) <= 100 * TOLERANCE * stiffness
     assert sol.penetration == pytest.approx(ref.penetration, abs=10 * TOLERANCE)
+
+
+def test_without_damping_the_active_set_stops_where_its_full_steps_do_not_settle():
+    """β = 1000 at ζ = 1: ``damp=False`` stops within :data:`UNDAMPED_STEPS` steps (the set
+    still changes, or a cycle of sets), not converged, having taken a small fraction of the
+    products the damped steps spend; the grid solve then converges by the Fischer-Burmeister
+    method from the same start."""
+    from viscocontact.methods.spectral.primal_dual import UNDAMPED_STEPS
+
+    op, heights = grid(1000.0, 1.0)
+    start = (heights > 0.95).astype(float)
+    kwargs = dict(mean_pressure=0.25, start=start, tolerance=TOLERANCE)
+    full = active_set(op, heights, damp=False, **kwargs)
+    damped = active_set(op, heights, **kwargs)
+    assert not full.converged and not damped.converged
+    assert full.iterations <= UNDAMPED_STEPS
+    assert "full steps" in full.message or "cycle" in full.message, full.message
+    assert full.applications < damped.applications / 5
+    chosen = grid_solve(op, heights, **kwargs)
+    assert chosen.converged and chosen.solver == FISCHER_BURMEISTER, chosen.message
+    assert chosen.applications < damped.applications

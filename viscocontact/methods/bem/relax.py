@@ -604,7 +604,8 @@ def _held(m: "_Motion", r: np.ndarray, landed: np.ndarray, changed: bool,
         others = float(np.max(np.abs(np.delete(r, i)), initial=0.0))
         if len(sides) < 2 or others > SETTLED * resolved(m):
             continue
-        ends = _jump(m.system, landed, int(i), float(m.x[i]))
+        with m.system.probing():
+            ends = _jump(m.system, landed, int(i), float(m.x[i]))
         if ends is not None:
             return (f"holds edge {i + 1} at {landed[i]:.8g}, where its residual jumps across "
                     f"zero (from {min(ends):.3g} to {max(ends):.3g}) instead of passing "

@@ -197,6 +197,17 @@ class EdgeSystem:
             self.shared.keep(key, self.control, self.counts, self.zones, (fields, ctx, r))
         return self._remember(key, x, (fields, ctx, r))
 
+    @contextlib.contextmanager
+    def probing(self):
+        """Evaluations that leave the system as they found it: the cached evaluation, the
+        model's start for the next one and :attr:`last_valid` are restored on exit (a probe of
+        the residual off the path, :func:`~.relax._jump`'s bisection)."""
+        saved = (self._latest, self._previous, self.last_valid)
+        try:
+            yield self
+        finally:
+            self._latest, self._previous, self.last_valid = saved
+
     def _remember(self, key: bytes, x, out: tuple) -> tuple:
         """``out``, the valid evaluation at ``x``, as the last one: cached, and its field the
         model's start for the next."""

@@ -22,11 +22,12 @@ by ``1/D_a`` on the cells where ``|D_a| > |D_b|`` (free cells) and by the invers
 restricted to the others (contact cells), as the active set's Newton systems are; a free cell
 without pressure (``p = 0 < g``) has a zero step and leaves the system. Once a step keeps the
 contact set ``p > c g``, that set is solved exactly (the active set's Newton system on it,
-:func:`~.primal_dual._restricted_solve`): the Newton iteration on ``φ`` would still have to
+:func:`~.primal_dual.restricted_solve`): the Newton iteration on ``φ`` would still have to
 drive the free cells' pressures to zero and restore the load. It is slower than the active set
 where that converges (about twice on the thesis's β = 10 scenes), so the grid solve uses it
-where the active set fails (:func:`~.solvers.grid_solve`): a standard linear solid with
-β = 1e3-1e4 at ζ of order one, where ``|Im Λ|/Re Λ`` reaches 10-40 on the grid.
+where the active set's full steps do not settle the set (:func:`~.solvers.grid_solve`): a
+standard linear solid with β = 1e3-1e4 at ζ of order one, where ``|Im Λ|/Re Λ`` reaches 10-40
+on the grid.
 
 References
 ----------
@@ -40,7 +41,7 @@ import numpy as np
 from ...deadline import check as check_deadline
 from .grid_solution import GridSolution, circulant_diagonal, violation
 from .krylov import gmres
-from .primal_dual import _active_start, _restricted_solve, counted_products
+from .primal_dual import active_start, restricted_solve, counted_products
 
 FISCHER_BURMEISTER = "Fischer-Burmeister Newton"
 #: Armijo's sufficient decrease of ``Ψ`` (a fraction of the decrease the linear model predicts).
@@ -64,20 +65,25 @@ def fischer_burmeister(circulant, heights, *, mean_pressure=None, penetration=No
     load = mean_pressure is not None
     apply, count = counted_products(lam, workers)
     c = 1.0 / circulant_diagonal(lam.real)
-    p, delta, g = _active_start(apply, r, np.zeros(r.size) if start is None else np.ravel(start),
+    p, delta, g = active_start(apply, r, np.zeros(r.size) if start is None else np.ravel(start),
                                 mean_pressure, penetration, start_penetration)
     system = _System(apply, lam, circulant.inverse, c, load, restart)
     phi = _phi(p, c * g)
     first, stuck = float(np.linalg.norm(phi)), False
-    found = None
+    found, failed = None, None
     for it in range(1, max_iterations + 1):
         check_deadline()
         contact = p > c * g
         # a contact set kept over a step is solved exactly: there the Newton iteration on φ
-        # would still have to drive the free cells' pressures to zero and restore the load
-        done = (None if found is None or not np.array_equal(contact, found) else
-                _finished(apply, circulant.inverse, p, r, delta, contact, tolerance,
-                          mean_pressure, c, restart))
+        # would still have to drive the free cells' pressures to zero and restore the load;
+        # a set whose exact solution failed the contact conditions is not solved again (the
+        # solution does not depend on the start)
+        kept = found is not None and np.array_equal(contact, found)
+        retried = failed is not None and np.array_equal(contact, failed)
+        done = (_finished(apply, circulant.inverse, p, r, delta, contact, tolerance,
+                          mean_pressure, c, restart) if kept and not retried else None)
+        if kept and done is None:
+            failed = contact
         found = contact
         if done is not None:
             q, delta, res = done
@@ -114,12 +120,12 @@ def _phi(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 def _finished(apply, inverse, p, heights, delta, contact, tolerance, mean_pressure, c, restart):
     """``(pressure, penetration, violation)`` on the contact set ``contact`` solved exactly (the
-    active set's Newton system on it, :func:`~.primal_dual._restricted_solve`), when that meets
+    active set's Newton system on it, :func:`~.primal_dual.restricted_solve`), when that meets
     the contact conditions to ``tolerance``; else None."""
     idx = np.flatnonzero(contact)
     if not idx.size:
         return None
-    sol, info, _ = _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure,
+    sol, info, _ = restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure,
                                      p.size, None, (1e-12, 0.5 * tolerance), restart)
     if info != 0:
         return None

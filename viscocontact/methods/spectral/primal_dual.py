@@ -1,6 +1,6 @@
 r"""The primal-dual active set (a semismooth Newton method) on one grid of the spectral method,
 for any operator: :func:`active_set`, its Newton systems solved by preconditioned GMRES on the
-active cells (:func:`_restricted_solve`), its steps controlled by :class:`_StepControl` and
+active cells (:func:`restricted_solve`), its steps controlled by :class:`_StepControl` and
 damped by a line search (:func:`_line_search`)
 (:mod:`~viscocontact.methods.spectral.solvers` has the overview and the references).
 """
@@ -35,9 +35,10 @@ class _StepControl:
     when a tight solve falls short; the steps damped after :data:`UNDAMPED_STEPS` steps or on a
     cycle of sets (:func:`active_set`)."""
 
-    def __init__(self, krylov_tolerance: float):
+    def __init__(self, krylov_tolerance: float, damp: bool = True):
         self.loose = LOOSE_KRYLOV if LOOSE_KRYLOV > krylov_tolerance else None
         self.tight = krylov_tolerance
+        self.damp = damp
         self.damped = False
         self.previous: np.ndarray | None = None
         self.full_step = False
@@ -47,8 +48,9 @@ class _StepControl:
         """Whether ``active`` is the set of the step before."""
         return self.previous is not None and np.array_equal(active, self.previous)
 
-    def choose(self, active: np.ndarray, iteration: int) -> None:
-        """The Krylov tolerance and damping of the step on ``active`` (step ``iteration``)."""
+    def choose(self, active: np.ndarray, iteration: int) -> str | None:
+        """The Krylov tolerance and damping of the step on ``active`` (step ``iteration``);
+        without ``damp``, why the solve stops where the steps would be damped (else None)."""
         key = active.tobytes()
         if iteration > UNDAMPED_STEPS and not self.damped:     # slow to settle: damp the steps
             self.damped, self.loose = True, None
@@ -61,6 +63,10 @@ class _StepControl:
         self.seen.add(key)
         if self.loose is not None and self.full_step and self._kept(active):
             self.loose = None             # the last full step kept the set: it is found
+        if self.damped and not self.damp:
+            return (f"the set still changes after {UNDAMPED_STEPS} full steps"
+                    if iteration > UNDAMPED_STEPS else "a cycle of active sets")
+        return None
 
     def taken(self, active: np.ndarray, fraction: float, unresolved: bool) -> None:
         """Record the step on ``active`` taken by ``fraction`` (1: whole); ``unresolved``: the
@@ -123,7 +129,7 @@ def _active_cells(p, g, heights, stiffness: float, first: bool,
 
 def _update(solved, idx, p, g, delta, heights, load: bool):
     """The steps of ``(p, Δ̃, g)`` to the solution ``solved = ([p_C, (Δ̃)], info, A p)`` of the
-    Newton system on the active cells ``idx`` (:func:`_restricted_solve`)."""
+    Newton system on the active cells ``idx`` (:func:`restricted_solve`)."""
     sol, _, product = solved
     target = np.zeros(p.size)
     target[idx] = sol[:idx.size]
@@ -146,7 +152,7 @@ def counted_products(spectrum, workers: int = 1):
     return apply, count
 
 
-def _active_start(apply, heights, start, mean_pressure, penetration, start_penetration):
+def active_start(apply, heights, start, mean_pressure, penetration, start_penetration):
     """The active set's starting pressure, penetration and gaps."""
     p = np.maximum(np.asarray(start, dtype=float), 0.0)
     if not p.any():
@@ -188,11 +194,11 @@ def _preconditioner(circulant):
 def active_set(circulant, heights, *, mean_pressure=None, penetration=None, start=None,
                start_penetration: float | None = None, tolerance: float = 1e-10,
                krylov_tolerance: float = 1e-10, max_iterations: int = 100, restart: int = 60,
-               workers: int = 1) -> GridSolution:
+               damp: bool = True, workers: int = 1) -> GridSolution:
     """Primal-dual active set (semismooth Newton) with preconditioned GMRES (any operator).
 
     Each step takes the active set ``C = {p - c g > 0}`` (``c = 1/A_kk``, the pressure a unit
-    gap is worth) and solves the Newton system on it (:func:`_restricted_solve`): the gap
+    gap is worth) and solves the Newton system on it (:func:`restricted_solve`): the gap
     vanishes on ``C``, the pressure off it. The step to that solution is taken whole when it
     reduces the merit ``|min(p, c g)|²`` and halved until it does otherwise (Armijo): a full step
     is the plain primal-dual active-set update, which can cycle on a strongly non-symmetric
@@ -218,6 +224,10 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
         Largest violation of the contact conditions (units of the amplitude).
     krylov_tolerance : float
         Relative tolerance of the tight GMRES solves.
+    damp : bool
+        Whether steps are damped where full ones do not settle the set; without, the solve
+        stops there, not converged (:func:`~.solvers.grid_solve` then takes the
+        Fischer-Burmeister method, which converges globally).
     """
     lam = circulant.eigenvalues
     inv = _preconditioner(circulant)
@@ -226,15 +236,17 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
     apply, apps = counted_products(lam, workers)
     stiffness = 1.0 / circulant_diagonal(lam.real)     # pressure that a unit gap is worth
     singular_when_closed = not load and lam.flat[0] == 0
-    p, delta, g = _active_start(apply, r, start, mean_pressure, penetration, start_penetration)
-    control, stalled = _StepControl(krylov_tolerance), 0     # (steps in a row without descent)
+    p, delta, g = active_start(apply, r, start, mean_pressure, penetration, start_penetration)
+    control, stalled = _StepControl(krylov_tolerance, damp), 0  # (steps in a row without descent)
     floor = (0.1 * tolerance * stiffness) ** 2      # a merit the tolerance does not resolve
     for it in range(1, max_iterations + 1):
         check_deadline()                  # the cooperative time limit (viscocontact.deadline)
         active = _active_cells(p, g, r, stiffness, it == 1, singular_when_closed)
-        control.choose(active, it)
+        undamped = control.choose(active, it)
+        if undamped is not None:
+            return _stopped(apply, p, r, delta, it - 1, apps[0], undamped)
         idx = np.flatnonzero(active)
-        solved = _restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, r.size,
+        solved = restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, r.size,
                                    control.loose, (control.tight, 0.5 * tolerance), restart)
         step_p, step_d, step_g = _update(solved, idx, p, g, delta, r, load)
         s, stalled = _fraction(p, g, step_p, step_g, stiffness, floor,
@@ -267,7 +279,7 @@ def _stopped(apply, p, heights, delta, iterations: int, applications: int,
                         message=message)
 
 
-def _restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
+def restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
                       restart):
     """GMRES on the active set ``idx``: ``A_CC p_C - Δ̃ 1 = r̃_C - 1`` with ``mean(p) = p̃∞``
     (load control), or ``A_CC p_C = r̃_C - 1 + Δ̃``; returns ``([p_C, (Δ̃)], info, A p)`` with

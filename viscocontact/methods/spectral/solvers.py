@@ -22,18 +22,20 @@ circulant of :mod:`~viscocontact.methods.spectral.operator`.
   inverse circulant restricted to ``C`` (Vollebregt 2014), the load row eliminated in the
   preconditioner through ``M 1``; loosely while the set changes, tightly once it does not
   (inexact Newton). After :data:`UNDAMPED_STEPS` steps, or a cycle of sets, the steps are
-  damped by a line search on ``|min(p, c g)|²``: the plain update cycles on strongly
-  non-symmetric operators (a step whose Krylov solve fell short is searched at once); after
-  :data:`~.primal_dual.STALLED_STEPS` steps in a row that are no descent direction the solve
-  stops, not converged. Any ``A``: the viscoelastic operator is not symmetric.
+  damped by a line search on ``|min(p, c g)|²`` (``damp``; without, the solve stops there):
+  the plain update cycles on strongly non-symmetric operators (a step whose Krylov solve fell
+  short is searched at once); after :data:`~.primal_dual.STALLED_STEPS` steps in a row that
+  are no descent direction the solve stops, not converged. Any ``A``: the viscoelastic
+  operator is not symmetric.
 * :func:`fischer_burmeister` (:mod:`~viscocontact.methods.spectral.fischer_burmeister`) — a
   semismooth Newton method on the Fischer-Burmeister function, with a line search on its
   smooth merit: globally convergent for every rheology (the operator's symmetric part is
   positive semidefinite), each step a Newton system on the cells that are not plainly free,
   and a contact set kept over a step solved exactly (the active set's system on it).
 * :func:`grid_solve` — the one a grid's operator needs: Polonsky-Keer for a symmetric
-  operator; else the active set, and where that fails, the Fischer-Burmeister method from the
-  same start, then the active set from the contact set that found.
+  operator; else the active set's full steps, and where they do not settle the set, the
+  Fischer-Burmeister method from the same start, then the damped active set from the contact
+  set that found.
 
 All stop on the largest violation of the contact conditions, ``max(max_C |g|, max_{∉C} -g)``,
 in units of the profile amplitude (the heights are normalised to 1), with ``p >= 0``.
@@ -43,9 +45,9 @@ discrete problem has one solution; the active-set method finds it on the thesis'
 (β = 10) and on every scene tried with ``tan δ`` up to 2.5 (an SLS with β <= 30). Past that
 (β = 1e3-1e4 at ζ of order one, ``|Im Λ|/Re Λ`` up to 40 on the grid) its Newton steps cycle,
 and its damped steps made so little descent that 7 and 12 of 24 rough scenes failed at β = 1e3
-and 1e4 (``benchmarks/spectral.py --betas``); with the Fischer-Burmeister method taking over
-after ten undamped steps, 24 and 23 converged (the 24th keeps a coarser grid's answer with its
-estimate, 0.25, when the method comes after the damped steps instead).
+and 1e4 (``benchmarks/spectral.py --betas``), and a sinusoid's cohesive solve spent 63 of its
+76 s in damped steps that did not converge. With the Fischer-Burmeister method taking over
+from the full steps, all 24 converge at both β (slowest 28 s), and that sinusoid takes 7 s.
 
 References
 ----------
@@ -94,9 +96,9 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
     it is symmetric, else :func:`active_set`, started with ``presolve`` from the solution for the
     operator's symmetric part (to :data:`PRESOLVE`, itself from ``start``): from a start far
     from the solution (none, or another problem's) the active set needs damped steps by the
-    dozen. Where the active set fails, :func:`fischer_burmeister` from the same start (at most
-    :data:`FISCHER_BURMEISTER_STEPS` steps), then the active set from the contact set that
-    found. The counts add up over every solve."""
+    dozen. Where the active set's full steps do not settle the set, :func:`fischer_burmeister`
+    from the same start (at most :data:`FISCHER_BURMEISTER_STEPS` steps), then the damped
+    active set from the contact set that found. The counts add up over every solve."""
     common = dict(mean_pressure=mean_pressure, penetration=penetration, tolerance=tolerance,
                   workers=workers)
     if circulant.symmetric:
@@ -113,13 +115,14 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
         its, apps = first.iterations, first.applications
     common.update(start_penetration=start_penetration)
     sol = active_set(circulant, heights, start=start, krylov_tolerance=krylov_tolerance,
-                     max_iterations=max_updates, **common)
+                     max_iterations=max_updates, damp=False, **common)
     its, apps = its + sol.iterations, apps + sol.applications
     if not sol.converged:
-        # the active set's damped steps make little descent on a strongly non-symmetric
-        # operator: the globally convergent Newton method on the Fischer-Burmeister function
-        # from the same start, and where its merit stalls at the round-off of a degenerate edge
-        # cell, the active set from the contact set it found
+        # full steps that do not settle the set cycle on a strongly non-symmetric operator,
+        # where damped ones make little descent: the globally convergent Newton method on the
+        # Fischer-Burmeister function from the same start, and where its merit stalls at the
+        # round-off of a degenerate edge cell, the damped active set from the contact set it
+        # found
         fb = fischer_burmeister(circulant, heights, start=start,
                                 max_iterations=min(max_updates, FISCHER_BURMEISTER_STEPS),
                                 **common)
