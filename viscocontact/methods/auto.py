@@ -3,8 +3,8 @@
 An adhesionless equilibrium is unique and does not depend on the loading path, so it needs no
 approach path and no edge energy balance: a uniform-grid spectral solve finds it directly, to a
 stated tolerance. An adhesive scene needs the energy balance at every edge, which only the BEM has
-(the spectral method applies a finite-range cohesive law on its grid, but from the adhesionless
-contact, not along the loading path, so it serves as a cross-check and is asked for by name). When
+(the spectral method applies a finite-range cohesive law on its grid, following the approach on
+its coarsest grid only, so it serves as a cross-check and is asked for by name). When
 the spectral method cannot reach the requested tolerance on the largest grid it allows, the BEM
 finishes the job seeded with the grid's contact set (where the BEM does not converge within
 :data:`FINISH_RESTARTS` contact-set changes, the grid's converged answer stands, with its
@@ -13,9 +13,10 @@ trailing-edge layer the grid does not resolve), the BEM solves the scene from th
 The other way round, when the BEM does not converge on an adhesive scene (or estimates its error
 above the tolerance) and the scene has a finite-range law that the grid applies, the spectral
 method solves it, and its answer is returned when it meets the tolerance: the events say which
-method ran and why. The grid reaches its cohesive equilibrium from the adhesionless contact,
-another history than the approach's, so a converged BEM answer above the tolerance is first
-solved again on finer meshes from its own edges (:meth:`Auto._refined`).
+method ran and why. The grid follows the approach from first touch on its coarsest grid and
+carries that state to the finer ones: the same history on another discretisation, which can end
+on another branch where the approach meets a fold or a birth, so a converged BEM answer above the
+tolerance is first solved again on finer meshes from its own edges (:meth:`Auto._refined`).
 """
 from __future__ import annotations
 
@@ -153,8 +154,9 @@ class Auto(SolutionMethod):
         if unsupported is not None:
             result.extras["events"].append(f"the spectral method was not tried: {unsupported}")
             return result
-        # the grid reaches its cohesive equilibrium from the adhesionless contact, not along the
-        # approach: a converged answer short of the tolerance is first refined on its own branch
+        # the grid follows the approach on its coarsest grid only, where a fold or a birth can
+        # lead to another branch: a converged answer short of the tolerance is first refined on
+        # its own branch
         result = self._refined(problem, result, fields, prepared)
         why = _shortfall(result, self.tolerance)
         if why is None:
@@ -166,9 +168,8 @@ class Auto(SolutionMethod):
             # the choice first, then why the grid solved it, then the grid's own events
             grid.extras.setdefault("events", [])[:0] = [
                 result.extras["events"][0],
-                f"method spectral: the bem solve {why}; the grid solves the scene (its "
-                "cohesive equilibrium is reached from the adhesionless contact, not along the "
-                "approach path)"]
+                f"method spectral: the bem solve {why}; the grid solves the scene (it follows "
+                "the approach from first touch on its coarsest grid, then refines that state)"]
             return grid
         result.extras["events"].append(
             f"the spectral method, tried after the bem solve {why}, "
