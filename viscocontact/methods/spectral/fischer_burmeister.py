@@ -36,6 +36,8 @@ of nonlinear complementarity problems. Math. Program. 75, 407-439. doi:10.1007/B
 """
 from __future__ import annotations
 
+from typing import Literal
+
 import numpy as np
 
 from ...deadline import check as check_deadline
@@ -77,13 +79,13 @@ def fischer_burmeister(circulant, heights, *, mean_pressure=None, penetration=No
         # a contact set kept over a step is solved exactly: there the Newton iteration on φ
         # would still have to drive the free cells' pressures to zero and restore the load;
         # a set whose exact solution failed the contact conditions is not solved again (the
-        # solution does not depend on the start)
+        # solution does not depend on the start; a Krylov solve that fell short does)
         kept = found is not None and np.array_equal(contact, found)
         retried = failed is not None and np.array_equal(contact, failed)
         done = (_finished(apply, circulant.inverse, p, r, delta, contact, tolerance,
                           mean_pressure, c, restart) if kept and not retried else None)
-        if kept and done is None:
-            failed = contact
+        if done is False:
+            failed, done = contact, None
         found = contact
         if done is not None:
             q, delta, res = done
@@ -118,10 +120,12 @@ def _phi(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.hypot(a, b) - a - b
 
 
-def _finished(apply, inverse, p, heights, delta, contact, tolerance, mean_pressure, c, restart):
+def _finished(apply, inverse, p, heights, delta, contact, tolerance, mean_pressure, c,
+              restart) -> tuple | Literal[False] | None:
     """``(pressure, penetration, violation)`` on the contact set ``contact`` solved exactly (the
     active set's Newton system on it, :func:`~.primal_dual.restricted_solve`), when that meets
-    the contact conditions to ``tolerance``; else None."""
+    the contact conditions to ``tolerance``; False when it does not, None when the Krylov solve
+    fell short."""
     idx = np.flatnonzero(contact)
     if not idx.size:
         return None
@@ -134,10 +138,10 @@ def _finished(apply, inverse, p, heights, delta, contact, tolerance, mean_pressu
     if mean_pressure is not None:
         delta = float(sol[idx.size])
     if np.min(q) < -tolerance * c:
-        return None
+        return False
     q = np.maximum(q, 0.0)
     res = violation(apply(q) - (heights - 1.0 + delta), q > 0)
-    return (q, delta, res) if res <= tolerance else None
+    return (q, delta, res) if res <= tolerance else False
 
 
 def _searched(apply, p, g, phi, delta, heights, c, step, newton: bool = True):
