@@ -43,7 +43,7 @@ import numpy as np
 from ...deadline import check as check_deadline
 from .grid_solution import GridSolution, circulant_diagonal, violation
 from .krylov import gmres
-from .primal_dual import active_start, restricted_solve, counted_products
+from .primal_dual import active_start, counted_products, restricted_solve
 
 FISCHER_BURMEISTER = "Fischer-Burmeister Newton"
 #: Armijo's sufficient decrease of ``Ψ`` (a fraction of the decrease the linear model predicts).
@@ -68,7 +68,7 @@ def fischer_burmeister(circulant, heights, *, mean_pressure=None, penetration=No
     apply, count = counted_products(lam, workers)
     c = 1.0 / circulant_diagonal(lam.real)
     p, delta, g = active_start(apply, r, np.zeros(r.size) if start is None else np.ravel(start),
-                                mean_pressure, penetration, start_penetration)
+                               mean_pressure, penetration, start_penetration)
     system = _System(apply, lam, circulant.inverse, c, load, restart)
     phi = _phi(p, c * g)
     first, stuck = float(np.linalg.norm(phi)), False
@@ -130,7 +130,7 @@ def _finished(apply, inverse, p, heights, delta, contact, tolerance, mean_pressu
     if not idx.size:
         return None
     sol, info, _ = restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure,
-                                     p.size, None, (1e-12, 0.5 * tolerance), restart)
+                                    p.size, None, (1e-12, 0.5 * tolerance), restart)
     if info != 0:
         return None
     q = np.zeros(p.size)

@@ -247,7 +247,7 @@ def active_set(circulant, heights, *, mean_pressure=None, penetration=None, star
             return _stopped(apply, p, r, delta, it - 1, apps[0], undamped)
         idx = np.flatnonzero(active)
         solved = restricted_solve(apply, inv, r, idx, p, delta, mean_pressure, r.size,
-                                   control.loose, (control.tight, 0.5 * tolerance), restart)
+                                  control.loose, (control.tight, 0.5 * tolerance), restart)
         step_p, step_d, step_g = _update(solved, idx, p, g, delta, r, load)
         s, stalled = _fraction(p, g, step_p, step_g, stiffness, floor,
                                control.damped or solved[1] != 0, stalled)
@@ -280,7 +280,7 @@ def _stopped(apply, p, heights, delta, iterations: int, applications: int,
 
 
 def restricted_solve(apply, inverse, heights, idx, p, delta, mean_pressure, n, loose, tight,
-                      restart):
+                     restart):
     """GMRES on the active set ``idx``: ``A_CC p_C - Δ̃ 1 = r̃_C - 1`` with ``mean(p) = p̃∞``
     (load control), or ``A_CC p_C = r̃_C - 1 + Δ̃``; returns ``([p_C, (Δ̃)], info, A p)`` with
     ``A p`` the product of the solution on the whole grid (GMRES's last). ``tight`` is
