@@ -334,7 +334,9 @@ def test_an_active_set_without_descent_stops(monkeypatch):
     from viscocontact.methods.spectral.primal_dual import STALLED_STEPS, UNDAMPED_STEPS
 
     prob = _problem(rheology=StandardLinearSolid(beta=1e4), zeta=1.0, mean_pressure=0.49878)
-    assert "100 active-set steps" in Spectral(points=1024).solve(prob).message
+    # unpatched, the damped steps run out (100 of them) or stop where the line search finds no
+    # descent (which of the two depends on round-off): the grid does not converge either way
+    assert not Spectral(points=1024).solve(prob).converged
     monkeypatch.setattr(primal_dual, "_line_search", lambda *args: None)
     r = Spectral(points=1024).solve(prob)
     import re

@@ -149,7 +149,7 @@ class _TipIteration:
         else:
             self.contact = np.asarray(start_contact, bool)
             self.extents = contact_extents(self.contact, self.width)
-        self.before: list | None = None  # the previous solve's extents and tip residuals, per row
+        self.before: list | None = None  # the tips' tracks per row (None: the runs changed)
         self.loose = LOOSE_INNER
         self.iterations = self.applications = 0
         self.solution: GridSolution | None = None
@@ -215,7 +215,8 @@ class _TipIteration:
     def settled(self) -> bool:
         """Whether the tips are found (the runs the same, every tip's residual within
         ``10·tolerance``, the last inner solve at the tolerance); if not, the next tips: where
-        the gap crosses η in a row whose runs changed, else by secants (:func:`moved_tips`)."""
+        the gap crosses η in a row whose runs changed, else each by its own residual, within
+        the bracket of its root once it has one (:func:`moved_tips`)."""
         width, law = self.width, self.law
         fresh = row_tips(self.g, self.contact, law, self.rows)
         same = [same_runs(old, new, width) or (whole_row(old, width) and whole_row(new, width))
@@ -233,12 +234,17 @@ class _TipIteration:
         # inexact inner solves while the tips move: a hundredth of their largest residual
         self.loose = 1e-2 * worst if all(same) else LOOSE_INNER
         before = self.before
-        moved_rows = [fr if not res else
-                      moved_tips(ext, res, fr, gr, None if before is None else before[i])
-                      for i, (ext, res, fr, gr) in enumerate(zip(self.extents, residuals, fresh,
-                                                                  rows_g))]
-        self.before = [None if res is None else list(zip(ext, res))
-                       for ext, res in zip(self.extents, residuals)]
+        moved_rows: list = []
+        tracks: list = []
+        for i, (ext, res, fr, gr) in enumerate(zip(self.extents, residuals, fresh, rows_g)):
+            if not res:
+                moved_rows.append(fr)
+                tracks.append(None)
+                continue
+            row, kept = moved_tips(ext, res, fr, gr, None if before is None else before[i])
+            moved_rows.append(row)
+            tracks.append(kept)
+        self.before = tracks
         self.extents = moved_rows
         return False
 
@@ -271,7 +277,9 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
     inner solve takes them as given; a tip's residual is the gap there less η. The first step
     and any step after the runs changed places every tip where the last solution's gap crosses
     η (a fixed point, which on its own creeps: the new stress pulls the next cell into range,
-    a cell per solve); then each tip moves by the secant of its last two residuals. Converged
+    a cell per solve); then each tip moves by the secant of its last two residuals, and once
+    a sample of each sign brackets its root, within that bracket (:func:`~.tips.moved_tips`:
+    a zone that snaps over many cells then settles instead of cycling). Converged
     when the runs are the same and every tip's residual is within ``10·tolerance``.
 
     Parameters

@@ -1,13 +1,15 @@
 r"""The tips of a cohesive law's zones on the spectral grid: where the runs of cells in range end
 (:func:`tip_positions`), the share of each cell under the cohesive stress (:func:`tip_weights`),
 and how the tips move from one inner solve of :func:`~.cohesive.cohesive_solve` to the next
-(:func:`moved_tips`: by the secant of their residuals ``g - η``, else to where the gap crosses
-``η``). Cell ``k`` spans ``[k - 1/2, k + 1/2]`` in cell coordinates; a run's extent is ``[L, R]``
-in them, ``R >= L`` (unwrapped)."""
+(:func:`moved_tips`: by the secant of their residuals ``g - η`` within the bracket of their
+root once they have one, else to where the gap crosses ``η``). Cell ``k`` spans
+``[k - 1/2, k + 1/2]`` in cell coordinates; a run's extent is ``[L, R]`` in them, ``R >= L``
+(unwrapped)."""
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+import attrs
 import numpy as np
 
 from .edges import runs
@@ -78,37 +80,89 @@ def same_runs(old, new, points: int) -> bool:
     return True
 
 
-def _secant(position, residual, before, slope_hint):
-    """The next position of one tip from its last two residuals (``before``: the previous
-    ``(position, residual)``), or None when they give no usable slope (same position, or a
-    slope against the gap's own or flatter than :data:`FLATTEST_SLOPE` times it). Two residuals
-    of opposite signs bracket the tip: the secant then interpolates between them, whatever its
-    slope."""
-    if before is None or position == before[0]:
-        return None
-    slope = (residual - before[1]) / (position - before[0])
-    if residual * before[1] < 0.0:
-        return position - residual / slope
-    if not slope * slope_hint > 0 or abs(slope) < FLATTEST_SLOPE * abs(slope_hint):
-        return None
-    return position - residual / slope
+#: A bracket's side is kept for this many samples of its tip: the tip's residual shares the
+#: other tips' moves, so an older sample no longer bounds its root (a zone that creeps with
+#: its neighbours would be held in a bracket that its root has left).
+BRACKET_AGE = 3
 
 
-def _tip_step(position, residual, before, fresh, slope_hint):
-    """The next position of one tip: the secant (:func:`_secant`), else, when the fixed point
-    ``fresh`` (where the gap crosses η) moves on in the direction of the last move but by less
-    than twice it, twice the last move (a zone that grows under its own stress, the jump of a
-    snap, or a soft zone whose fixed point creeps: the moves double until the residual changes
-    sign, and the secant then interpolates), else ``fresh``."""
-    moved = _secant(position, residual, before, slope_hint)
-    if moved is not None:
-        return moved
-    if before is None:
-        return fresh
-    last, ahead = position - before[0], fresh - position
-    if last * ahead > 0.0 and abs(ahead) < 2.0 * abs(last):
-        return position + 2.0 * last
-    return fresh
+@attrs.frozen
+class TipTrack:
+    """One tip's recent samples since its run last changed, in its outward coordinate ``s``
+    (``-x`` for a run's first tip, ``x`` for its last: the zone grows as ``s`` grows), with its
+    residual ``r = g - η`` (a zone whose tip has ``r < 0`` grows, one with ``r > 0``
+    shrinks).
+
+    ``last`` is the previous sample ``(s, r)``; ``inner`` the sample with ``r < 0`` and
+    ``outer`` the one with ``r > 0`` that bracket the tip's root (``inner[0] < outer[0]``), as
+    ``(s, r, n)`` with ``n`` the sample's number, each None until one is seen or once it is
+    older than :data:`BRACKET_AGE` samples; ``count`` the samples so far."""
+
+    last: tuple[float, float] | None = None
+    inner: tuple[float, float, int] | None = None
+    outer: tuple[float, float, int] | None = None
+    count: int = 0
+
+    def sampled(self, s: float, r: float) -> "TipTrack":
+        """The track with the sample ``(s, r)``: it replaces the bracket's side of its sign.
+        The other side is let go where the sample lies beyond it, or where the sample is nearer
+        to it than the side it replaces and yet no smaller (a residual that rises outwards
+        cannot do that: the root has moved with the other tips)."""
+        n = self.count + 1
+        inner, outer = ((side if side is not None and n - side[2] <= BRACKET_AGE else None)
+                        for side in (self.inner, self.outer))
+        if r < 0.0:
+            if outer is not None and (s >= outer[0] or (inner is not None and s > inner[0]
+                                                         and r <= inner[1])):
+                outer = None
+            if inner is None or s > inner[0]:
+                inner = (s, r, n)
+        elif r > 0.0:
+            if inner is not None and (s <= inner[0] or (outer is not None and s < outer[0]
+                                                        and r >= outer[1])):
+                inner = None
+            if outer is None or s < outer[0]:
+                outer = (s, r, n)
+        return TipTrack(last=(s, r), inner=inner, outer=outer, count=n)
+
+
+def _tip_step(track: TipTrack, s: float, r: float, fresh: float,
+              slope_hint: float) -> tuple[float, TipTrack]:
+    """The next outward coordinate of one tip and its track.
+
+    The secant of the tip's last two samples where its slope is usable (at least
+    :data:`FLATTEST_SLOPE` times the gap's own ``slope_hint``, the slope the residual would
+    have without the zone's own stress, or two samples of opposite signs). While a root is
+    bracketed (recent samples of each sign, :class:`TipTrack`), the tip stays within the
+    bracket's inner 98 %: the secant there, else the false position between its sides, else
+    its middle; so a zone that snaps over many cells settles instead of cycling between the two
+    sides of a kinked residual. Unbracketed, the tip moves the way its residual says (out where
+    ``r < 0``, in where ``r > 0``): by the secant, else by twice its last move where the fixed
+    point ``fresh`` (where the gap crosses η) moves on by less than that (a zone that grows
+    under its own stress, the jump of a snap, or a soft zone whose fixed point creeps: the
+    moves double until the residual changes sign), else to ``fresh``."""
+    before = track.last
+    track = track.sampled(s, r)
+    secant = None
+    if before is not None and s != before[0]:
+        slope = (r - before[1]) / (s - before[0])
+        if r * before[1] < 0.0 or (slope * slope_hint > 0
+                                   and abs(slope) >= FLATTEST_SLOPE * abs(slope_hint)):
+            secant = s - r / slope
+    if track.inner is not None and track.outer is not None:
+        (a, ra, _), (b, rb, _) = track.inner, track.outer
+        margin = 0.01 * (b - a)
+        for guess in (secant, a - ra * (b - a) / (rb - ra)):
+            if guess is not None and a + margin <= guess <= b - margin:
+                return guess, track
+        return 0.5 * (a + b), track
+    if secant is not None:
+        return secant, track
+    if before is not None and s != before[0]:
+        last, ahead = s - before[0], fresh - s
+        if last * r < 0.0 and last * ahead > 0.0 and abs(ahead) < 2.0 * abs(last):
+            return s + 2.0 * last, track
+    return fresh, track
 
 
 def row_tips(gap, contact, law: GridLaw, rows: int) -> list:
@@ -123,18 +177,24 @@ def whole_row(extents, points: int) -> bool:
     return len(extents) == 1 and extents[0][1] - extents[0][0] >= points
 
 
-def moved_tips(extents, residuals, fresh, gap, before):
-    """The next tips of one row: each by the secant of its last two residuals (``before``: the
-    previous extents and residuals of the row), else where the gap crosses η (``fresh``)."""
-    moved = []
+def moved_tips(extents, residuals, fresh, gap, tracks):
+    """The next tips of one row and their tracks: each tip by :func:`_tip_step` in its
+    outward coordinate (``tracks``: the row's previous tracks, per run, None after its runs
+    changed). Two tips of a run that would cross meet at their middle (the zone vanishes
+    there, and the next solve's runs say so)."""
+    moved, kept = [], []
     for j, ((lo, hi), (r_lo, r_hi), (f_lo, f_hi)) in enumerate(zip(extents, residuals, fresh)):
-        old = None if before is None else before[j]
-        new_lo = _tip_step(lo, r_lo, None if old is None else (old[0][0], old[1][0]), f_lo,
-                           _interp(gap, lo + 0.5) - _interp(gap, lo - 0.5))
-        new_hi = _tip_step(hi, r_hi, None if old is None else (old[0][1], old[1][1]), f_hi,
-                           _interp(gap, hi + 0.5) - _interp(gap, hi - 0.5))
+        t_lo, t_hi = (TipTrack(), TipTrack()) if tracks is None else tracks[j]
+        s_lo, t_lo = _tip_step(t_lo, -lo, r_lo, -f_lo,
+                               _interp(gap, lo - 0.5) - _interp(gap, lo + 0.5))
+        s_hi, t_hi = _tip_step(t_hi, hi, r_hi, f_hi,
+                               _interp(gap, hi + 0.5) - _interp(gap, hi - 0.5))
+        new_lo, new_hi = -s_lo, s_hi
+        if new_lo > new_hi:
+            new_lo = new_hi = 0.5 * (new_lo + new_hi)
         moved.append((new_lo, new_hi))
-    return moved
+        kept.append((t_lo, t_hi))
+    return moved, kept
 
 
 def contact_extents(contact, width: int) -> list:
