@@ -95,9 +95,10 @@ def grid_solve(circulant, heights, *, mean_pressure=None, penetration=None, star
     """One grid's contact problem with the solver its operator needs: :func:`polonsky_keer` when
     it is symmetric, else :func:`active_set`, started with ``presolve`` from the solution for the
     operator's symmetric part (to :data:`PRESOLVE`, itself from ``start``): from a start far
-    from the solution (none, or another problem's) its full steps rarely settle the set. Where the active set's full steps do not settle the set, :func:`fischer_burmeister`
-    from the same start (at most :data:`FISCHER_BURMEISTER_STEPS` steps), then the damped
-    active set from the contact set that found. The counts add up over every solve."""
+    from the solution (none, or another problem's) its full steps rarely settle the set. Where
+    they do not, :func:`fischer_burmeister` from the same start (at most
+    :data:`FISCHER_BURMEISTER_STEPS` steps), then the damped active set from the contact set
+    that found. The counts add up over every solve."""
     common = dict(mean_pressure=mean_pressure, penetration=penetration, tolerance=tolerance,
                   workers=workers)
     if circulant.symmetric:
