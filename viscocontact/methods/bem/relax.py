@@ -21,9 +21,10 @@ meet merge, contacts that narrow below the shortest length the mesh resolves det
 close over the period close where full contact can be the state
 (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
 incompressible solid below its closing penetration a gap of the volume the penetration fixes stays
-open), and the mesh zones are remade in the first steps, at rest, where a contact shrank to less
-than half the width its zones fit, and for a step whose end has no field on the zones it was taken
-with (a cohesive zone's equations past their reach). As the edges slow down the steps grow and
+open), and the mesh zones are remade in the first steps (each evaluated at its end on the zones
+made for that end), at rest, where a contact shrank to less than half the width its zones fit,
+and for a step whose end has no field on the zones it was taken with (a cohesive zone's equations
+past their reach). As the edges slow down the steps grow and
 become Newton's; once every mode of the motion decays and Newton's iteration from the state
 contracts (its second step at most :data:`NEWTON_CONTRACTION` of its first, which is within
 :data:`NEWTON_REACH` half-widths: the state lies where the linearised motion holds, and the flow
@@ -386,19 +387,11 @@ class Relaxation:
             return None
         if full or not landed.size:
             return self._ended(landed, full, control)
-        after = self.eq.system(control, landed) if changed else m.system
-        r = _valid(after.residual, landed)
-        if r is None and not changed:
-            # no field at the step's end on the zones it was taken with (a cohesive zone's
-            # equations past their reach): it is evaluated on zones made for it, if they differ
-            fresh = _fresh(self.eq, m.system, landed, control)
-            if fresh is not None:
-                after, r = fresh, _valid(fresh.residual, landed)
+        after, r, as_is = _end(self.eq, m, landed, changed, control)
         # the local error of an implicit Euler step, h²/2·X'', is h/2 times the change of
         # the speed -O r over the step (one residual a step: the one the next step needs);
-        # a step that changes the contact set or its zones is taken as it is (the change is
-        # the motion's event)
-        error = np.inf if r is None else _local_error(m, r, after is not m.system)
+        # a step taken as it is (:func:`_end`) changes the contact set: the motion's event
+        error = np.inf if r is None else _local_error(m, r, as_is)
         if error > self.tolerance:
             if after is not m.system:
                 systems.discard(after)      # a step not taken: its new system is let go
@@ -485,6 +478,29 @@ def _proposed(m: "_Motion", r: np.ndarray, J: np.ndarray,
         m.h = h / reach
         return None
     return move, h
+
+
+def _end(eq, m: "_Motion", landed: np.ndarray, changed: bool, control: Control):
+    """``(system, r, as_is)``: the system a step's end ``landed`` is evaluated on, the residual
+    there (None: no valid field) and whether the step is taken as it is, without a local error.
+    A new contact set (``changed``) gets its own system, taken as it is; the motion's first
+    steps, which move the edges the most, end on the zones made for their ends (one evaluation
+    where a remake after the step took a second); a step whose end has no field on the zones
+    it was taken with (a cohesive zone's equations past their reach) is evaluated on zones
+    made for it, if they differ, and taken as it is."""
+    if changed:
+        after = eq.system(control, landed)
+        return after, _valid(after.residual, landed), True
+    after = m.system
+    if m.early and m.moved < REZONED:
+        fresh = _fresh(eq, m.system, landed, control)
+        after = m.system if fresh is None else fresh
+    r = _valid(after.residual, landed)
+    if r is None and after is m.system:
+        fresh = _fresh(eq, m.system, landed, control)
+        if fresh is not None:
+            return fresh, _valid(fresh.residual, landed), True
+    return after, r, False
 
 
 def _fresh(eq, system, x: np.ndarray, control: Control):
