@@ -137,24 +137,30 @@ class MaugisDugdale(AdhesionModel):
     def field_solution(self, mesh, kernel, shape, control: dict, *, antisymmetric: bool = False,
                        previous=None):
         """The field with the zones that bound the stress at every edge
-        (:func:`~viscocontact.contact.cohesive.zone_fields`, started from ``previous``'s zones
-        and filled necks). A neck may be filled only where its gap stays below the range; an
-        open neck whose gap stays between 0 and the range between the tips is filled (the law
-        acts across it). Raises :class:`AdhesionLimitation` where no zones bound the stress."""
+        (:func:`~viscocontact.contact.cohesive.zone_fields`). A neck may be filled only where its
+        gap stays below the range; an open neck whose gap stays between 0 and the range between
+        the tips is filled (the law acts across it). Raises :class:`AdhesionLimitation` where no
+        zones bound the stress.
+
+        The zones are solved from the same short start at every call, and ``previous`` is not
+        used: at fixed edges the zones' equations can have more than one root (a short zone and
+        a long one past the minimum of ``K̃(d)``, an open neck and a filled one), so a start
+        taken from the last evaluation made the residual at given edges depend on the order of
+        evaluations. On campaign seed 189 (sinusoid, SLS β = 3993, confined layer) 83 of the
+        135 evaluations of a solve gave another residual from that start than from this one,
+        1.8e4 apart (a filled neck against an open one), and where the overdamped motion
+        landed changed with how many evaluations it took. So the field is a function of the
+        edges and the mesh: a neck fills only where the open zones have no root short of
+        meeting or its free interval stays within the range."""
         from ..contact.fields import solve_fields
 
         base = solve_fields(mesh, kernel, shape, antisymmetric=antisymmetric, **control)
         if self.gamma == 0:
             return base
         n = len(mesh.edges)
-        loads = getattr(previous, "loads", None)
         full = None
-        if loads is not None and len(loads.stress) == n:
-            start = np.asarray(loads.width, dtype=float)
-            full = filled(previous.mesh.edges, start)
-        else:
-            start = np.full(n, min(self.quasi_static_zone, 0.1 * float(np.min(np.diff(
-                mesh.edges)[0::2]))))
+        start = np.full(n, min(self.quasi_static_zone, 0.1 * float(np.min(np.diff(
+            mesh.edges)[0::2]))))
         stress = self.strength(shape.amplitude)
 
         eta = self.opening(shape.amplitude)

@@ -356,6 +356,32 @@ def test_a_zone_without_a_root_short_of_its_neighbour_fills_the_neck(start):
     assert 0.0 < d[0] < 0.05 and 0.0 < d[3] < 0.05
 
 
+#: Campaign seed 189 (sinusoid Λ̃ = 0.031, SLS β = 3993, confined layer, η ≈ 0.025) at zero load
+#: on its way into contact: a contact, and the next point its motion evaluated.
+ONE_CONTACT = np.array([-0.04472459349322791, 0.04682680775564137])
+MOVED = np.array([-0.04473792376328812, 0.0532373154492245])
+
+
+def test_the_zones_do_not_depend_on_the_last_evaluation():
+    """The residual at given edges is the same whatever the system evaluated before. Started
+    from the zones of the last evaluation, the point ``MOVED`` after ``ONE_CONTACT`` gave
+    r = (-0.196, -114.7), and from short zones (3.11, -18010): another root of the zones'
+    equations, and a motion whose landing depended on how many evaluations it took."""
+    from viscocontact.methods.bem.sets import Control
+    from viscocontact.testing.campaign import draw
+
+    solve = _campaign_solve({**draw(189), "method": {"kind": "bem"}})
+    control = Control.load_of(0.0)
+    after = solve.equilibrium.system(control, ONE_CONTACT)
+    fresh = solve.equilibrium.system(control, ONE_CONTACT)
+    after.shared = fresh.shared = None
+    assert np.all(np.isfinite(after.evaluate(ONE_CONTACT.copy())[2]))
+    r_after = after.evaluate(MOVED.copy())[2]
+    r_fresh = fresh.evaluate(MOVED.copy())[2]
+    assert np.all(np.isfinite(r_fresh))
+    np.testing.assert_array_equal(r_after, r_fresh)
+
+
 def test_a_zone_without_a_root_whose_neck_cannot_fill_has_no_field():
     """Campaign seed 29 (sinusoid, Prony, free layer, load control) just past a fold at
     p̃∞ = -0.184: the left zone of its one contact passes the minimum of its equation with its
