@@ -158,7 +158,6 @@ class MaugisDugdale(AdhesionModel):
         if self.gamma == 0:
             return base
         n = len(mesh.edges)
-        full = None
         start = np.full(n, min(self.quasi_static_zone, 0.1 * float(np.min(np.diff(
             mesh.edges)[0::2]))))
         stress = self.strength(shape.amplitude)
@@ -171,7 +170,7 @@ class MaugisDugdale(AdhesionModel):
         tip = self.tip_condition(shape)
         try:
             fields = zone_fields(base, kernel, stress=stress, control=control, start=start,
-                                 full=full, admissible=admissible, tip=tip)
+                                 admissible=admissible, tip=tip)
             # open zones whose free interval between the tips has no gap beyond the range (and
             # none below the surface): the law acts across it, so the zones fill the neck
             narrow = _reclassified_necks(fields, kernel, shape, eta)[0]

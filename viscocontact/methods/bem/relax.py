@@ -22,32 +22,31 @@ close over the period close where full contact can be the state
 (:meth:`~.closed.ClosedContact.possible`; elsewhere the step that closed it is shortened: on an
 incompressible solid below its closing penetration a gap of the volume the penetration fixes stays
 open), and the mesh zones are remade in the first steps (each evaluated at its end on the zones
-made for that end), at rest, where a contact shrank to less than half the width its zones fit,
-and for a step whose end has no field on the zones it was taken with (a cohesive zone's equations
-past their reach). As the edges slow down the steps grow and
-become Newton's; once every mode of the motion decays and Newton's iteration from the state
-contracts (its second step at most :data:`NEWTON_CONTRACTION` of its first, which is within
-:data:`NEWTON_REACH` half-widths: the state lies where the linearised motion holds, and the flow
-ends at Newton's root), or ``max|r|`` has fallen to :data:`SETTLED` times the solver's tolerance,
-the equilibrium solve finishes from there with the contact set held, on the trial budgets of an
-approach step (at a fold, where the root is gone, it fails fast and the motion goes on). Just past
-a fold the edges slow down where the root has vanished (a bottleneck whose residual can fall below
-the rest level); where the equilibrium solve finds no root at rest, the motion goes on through it.
-Where the profile penetrates at its root, contacts are born there, at zero size, and the motion
-goes on with them (a born contact grows as every edge moves); where a contact at rest carries more
-tension than the interface holds (any, without adhesion; the cohesive stress σ̃0 under a cohesive
-law), it splits there and the motion goes on with its parts. Where the parts merge again and split
-at the same place a third time, the tension is a nearly vanishing stress whose sign the mesh does
-not resolve: the contact is refined there, as the equilibrium solve refines it
+made for that end), at rest, where a contact shrank to less than half the width its zones fit, and
+for a step whose end has no field on the zones it was taken with (a cohesive zone's equations past
+their reach). As the edges slow down the steps grow and become Newton's; once every mode of the
+motion decays and Newton's iteration from the state contracts (its second step at most
+:data:`NEWTON_CONTRACTION` of its first, which is within :data:`NEWTON_REACH` half-widths: the
+state lies where the linearised motion holds, and the flow ends at Newton's root), or ``max|r|``
+has fallen to :data:`SETTLED` times the solver's tolerance, the equilibrium solve finishes from
+there with the contact set held, on the trial budgets of an approach step (at a fold, where the
+root is gone, it fails fast and the motion goes on). Just past a fold the edges slow down where the
+root has vanished (a bottleneck whose residual can fall below the rest level); where the
+equilibrium solve finds no root at rest, the motion goes on through it. Where the profile
+penetrates at its root, contacts are born there, at zero size, and the motion goes on with them (a
+born contact grows as every edge moves); where a contact at rest carries more tension than the
+interface holds (any, without adhesion; the cohesive stress σ̃0 under a cohesive law), it splits
+there and the motion goes on with its parts. Where the parts merge again and split at the same
+place a third time, the tension is a nearly vanishing stress whose sign the mesh does not resolve:
+the contact is refined there, as the equilibrium solve refines it
 (:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which has no shorter
 step to get past it), and the motion goes on. Where every contact detaches while the profile
 penetrates the undeformed solid, contacts are born there and the motion goes on; born again where
 they were, the motion is periodic (no steady state). Where the steps creep to the end of the
-model's reach (no field past it; :data:`WALL`), the motion ends there, not converged; where an
-edge is held at a jump of its residual across zero (:func:`_held`: no root, the flow on both
-sides points at it), it ends there too, saying that the balance has no root (outside the
-model). So merges, detachments, births and splits all happen on the way, as the motion makes
-them.
+model's reach (no field past it; :data:`WALL`), the motion ends there, not converged; where an edge
+is held at a jump of its residual across zero (:func:`_held`: no root, the flow on both sides
+points at it), it ends there too, saying that the balance has no root (outside the model). So
+merges, detachments, births and splits all happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
@@ -283,11 +282,11 @@ class Relaxation:
                 return self._failed(m.x, "met a contact set without a valid field")
             size = float(np.max(np.abs(m.r)))
             near = size <= min(SETTLED * self._resolved(m), m.ghost)
-            # the first steps' zones are remade (they move the edges the most), those of a
-            # contact that shrank to less than half the width they fit, and those of the rest
-            # state, on a budget of their own
-            if ((near and m.rezoned < REZONED) or (m.early and m.moved < REZONED)
-                    or squeezed(m.system.zones, m.x)) and self._rezone(m, control, systems):
+            # the zones of a contact that shrank to less than half the width they fit are
+            # remade, and those of the rest state, on a budget of their own (the first steps
+            # end on zones made for their ends: :func:`_end`)
+            if ((near and m.rezoned < REZONED) or squeezed(m.system.zones, m.x)) \
+                    and self._rezone(m, control, systems):
                 m.rezoned += int(near)
                 continue
             if near:
