@@ -25,9 +25,13 @@ Contract for implementers
    :func:`~viscocontact.contact.fields.solve_fields`, contact stresses only). A finite-range model
    adds its stresses outside the contacts there as
    :class:`~viscocontact.contact.fields.KnownLoads` (cohesive zones, whose lengths it solves for),
-   reusing ``previous``, the field of the last evaluation of the same contact set, as a start. It
-   raises :class:`AdhesionLimitation` for a contact set it cannot handle; the orchestrator then
-   treats the point as invalid (a solver steps back) and reports the reason if the solve fails.
+   reusing ``previous``, the field of the last evaluation of the same contact set, as a start. A
+   start may change how fast the model's own solve converges, never which solution it finds:
+   where that solve has more than one, the field must not depend on ``previous`` (the built-in
+   Maugis-Dugdale zones do not use it), or the residual at given edges depends on the order of
+   evaluations. It raises :class:`AdhesionLimitation` for a contact set it cannot handle; the
+   orchestrator then treats the point as invalid (a solver steps back) and reports the reason if
+   the solve fails.
 6. Optionally, :meth:`gap_violation` returns a message when the gap outside the contacts (and
    outside the model's own loads) breaks the model's assumptions at an equilibrium; the
    orchestrator then reports the solve as not converged with that message. Before that,
