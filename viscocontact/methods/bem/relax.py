@@ -490,12 +490,11 @@ def _end(eq, m: "_Motion", landed: np.ndarray, changed: bool, control: Control):
     if changed:
         after = eq.system(control, landed)
         return after, _valid(after.residual, landed), True
-    after = m.system
-    if m.early and m.moved < REZONED:
-        fresh = _fresh(eq, m.system, landed, control)
-        after = m.system if fresh is None else fresh
+    early = m.early and m.moved < REZONED
+    fresh = _fresh(eq, m.system, landed, control) if early else None
+    after = m.system if fresh is None else fresh
     r = _valid(after.residual, landed)
-    if r is None and after is m.system:
+    if r is None and not early:
         fresh = _fresh(eq, m.system, landed, control)
         if fresh is not None:
             return fresh, _valid(fresh.residual, landed), True
