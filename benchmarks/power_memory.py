@@ -7,10 +7,11 @@ a two-arm Prony solid at ζ = 4.6e-4 under the energy balance, on the half-plane
 confined layer: the misfit is the same on both). Its fastest arm's relaxation time is scaled by
 10, 1 and 0.1, so that the arm's relaxation length ζτ (the shortest of the solid, the width of a
 trailing edge's boundary layer) sits above, near and below δX, and each is solved at the
-default δX = 1e-4, at δX equal to that length and at δX = 0 (the closed form). Each row gives μ, the dissipated power's friction (bulk and edge flux), their misfit
-relative to μ, the campaign's allowance for it (:func:`viscocontact.testing.campaign.check`:
-the two error estimates and 1 % of the energy through the tips) and whether the misfit is
-within it. About two minutes on one core.
+default δX = 1e-4, at δX equal to that length and at δX = 0 (the closed form). Each row gives
+μ, the dissipated power's friction (bulk and edge flux), their misfit relative to μ, the
+campaign's allowance for it (:func:`viscocontact.testing.campaign.check`: the two error
+estimates and 1 % of the energy through the tips) and whether the misfit is within it.
+About a minute on two cores.
 """
 from __future__ import annotations
 
