@@ -121,11 +121,20 @@ class PreparedKernel:
         ``ζ/β``). Below the shortest one the solid is glassy; a stress carried by the slow
         branches reaches zero there, so a trailing edge of a stiff solid (large ``β``) has a
         boundary layer that wide. Empty without active branches."""
+        return self.relaxation_spectrum()[0]
+
+    def relaxation_spectrum(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(lengths, shares)``: :meth:`relaxation_lengths` and the share of the glassy
+        modulus ``1/instantaneous`` that relaxes at each, ``E_i/(E0 + Σ E_j)`` of the relaxation
+        function ``E0 + Σ E_i exp(-x/ℓ_i)`` of the active branches (the shares of a standard
+        linear solid: ``1 - 1/β``). Empty without active branches."""
         if self.weights.size == 0 or self.instantaneous <= 0:
-            return np.empty(0)
+            return np.empty(0), np.empty(0)
         from ..rheology.prony import creep_to_relaxation
 
-        return creep_to_relaxation(self.instantaneous, self.weights, self.zetas)[2]
+        relaxed, moduli, lengths = creep_to_relaxation(self.instantaneous, self.weights,
+                                                       self.zetas)
+        return lengths, moduli / (relaxed + float(np.sum(moduli)))
 
     # ---- Fourier view ----------------------------------------------------------------------
     def compliance(self, m):
