@@ -460,6 +460,34 @@ def test_a_contact_splits_where_its_tension_exceeds_the_cohesive_stress():
     assert tensile_split(SimpleNamespace(mesh=mesh, sigma=-np.cos(x)), strength=0.0)[0] is None
 
 
+def test_a_compressed_hump_between_two_overloaded_stretches_stays_in_contact():
+    """Two stretches whose tension exceeds σ̃0 flank a compressed hump: each opens on its own
+    and the hump stays a contact (opened with them, it penetrated the profile and the parts
+    merged again, a cycle: campaign seed 40); stretches fewer than ``KEPT`` elements apart open
+    together, and ``widen`` keeps each cut within the parts beside it."""
+    from types import SimpleNamespace
+
+    from viscocontact.contact.mesh import MeshSpec, build_mesh
+    from viscocontact.methods.bem.checks import KEPT, tensile_split
+
+    mesh = build_mesh(np.array([-1.0, 1.0]), MeshSpec(elements=64))
+    index = np.arange(64)
+
+    def split(hump: int, widen: bool = False):
+        tensile = (index >= 20) & (index < 44) & ~((index >= 32 - hump) & (index < 32))
+        sigma = np.where(tensile, 1.5, -1.0)
+        return tensile_split(SimpleNamespace(mesh=mesh, sigma=sigma), widen, strength=1.0)
+
+    edges, where, _ = split(hump=6)
+    assert edges is not None and len(edges) == 6 and len(where) == 2
+    assert edges[1:5] == pytest.approx([mesh.left[20], mesh.right[25], mesh.left[32],
+                                        mesh.right[43]])
+    wide = split(hump=6, widen=True)[0]
+    hump = mesh.right[31] - mesh.left[26]
+    assert np.all(np.diff(wide) > 0) and wide[3] - wide[2] >= 0.5 * hump * (1 - 1e-12)
+    edges, where, _ = split(hump=KEPT - 1)
+    assert len(edges) == 4 and edges[1:3] == pytest.approx([mesh.left[20], mesh.right[43]])
+
 def _rough_md_range(h0_nm: float):
     """:func:`_rough_md` with zones of range ``h0_nm`` nanometres."""
     from pathlib import Path

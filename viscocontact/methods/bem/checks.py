@@ -138,15 +138,24 @@ class Checks:
         return {"x": x, "pressure": pres, "displacement": u, "gap": np.where(within, 0.0, u - w)}
 
 
+#: Elements at each end of a contact that :func:`tensile_split` does not judge, and fewest
+#: between two overloaded stretches that it keeps in contact.
+KEPT = 3
+
+
 def tensile_split(fields, widen: bool = False, strength: float = 0.0):
     """Split contacts that carry more tension inside than the interface holds (an adhesionless
     solid none, a finite-range law its cohesive stress ``strength``): the new edges, for each
-    contact split its index and the middle of its overloaded stretch, and the largest tension
-    beyond ``strength`` as a fraction of the largest stress (``None, [], 0.0`` without).
+    overloaded stretch its contact's index and its middle, and the largest tension beyond
+    ``strength`` as a fraction of the largest stress (``None, [], 0.0`` without).
 
-    The new inner edges are the ends of the stretch; ``widen`` moves each out by half the
-    stretch's width (at most halfway to the contact's edges), for a split whose parts merged
-    again."""
+    Each stretch of elements whose tension exceeds ``strength`` opens between its ends, and the
+    compressed parts between stretches stay in contact: a compressed hump between two tensile
+    shoulders opened with them penetrated the profile, and the parts merged again (campaign
+    seed 40). A contact's :data:`KEPT` elements at each end are not judged (their stresses are
+    the bounded-stress fit's), and stretches fewer than :data:`KEPT` elements apart open
+    together. ``widen`` moves each stretch's ends out by half its width (:func:`_widened`), for
+    a split whose parts merged again."""
     mesh = fields.mesh
     sig = fields.sigma
     scale = np.max(np.abs(sig)) if sig.size else 0.0
@@ -154,18 +163,37 @@ def tensile_split(fields, widen: bool = False, strength: float = 0.0):
     for j in range(mesh.n_contacts):
         sl = mesh.slice(j)
         s = sig[sl] - strength
+        a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
         inner = np.zeros(s.shape, bool)
-        inner[3:-3] = s[3:-3] > 1e-6 * scale
-        if inner.any():
-            tension = max(tension, float(np.max(s[3:-3])) / scale)
-            idx = np.flatnonzero(inner)
-            lo, hi = mesh.left[sl][idx[0]], mesh.right[sl][idx[-1]]
-            if widen:
-                a, b = mesh.edges[2 * j], mesh.edges[2 * j + 1]
-                w = 0.5 * (hi - lo)
-                lo, hi = max(lo - w, 0.5 * (a + lo)), min(hi + w, 0.5 * (hi + b))
-            out += [mesh.edges[2 * j], lo, hi, mesh.edges[2 * j + 1]]
-            where.append((j, 0.5 * (lo + hi)))
-        else:
-            out += [mesh.edges[2 * j], mesh.edges[2 * j + 1]]
+        inner[KEPT:-KEPT] = s[KEPT:-KEPT] > 1e-6 * scale
+        if not inner.any():
+            out += [a, b]
+            continue
+        tension = max(tension, float(np.max(s[KEPT:-KEPT])) / scale)
+        cuts = [(mesh.left[sl][i], mesh.right[sl][k]) for i, k in _stretches(inner)]
+        if widen:
+            cuts = _widened(cuts, a, b)
+        out += [a, *[v for cut in cuts for v in cut], b]
+        where += [(j, 0.5 * (lo + hi)) for lo, hi in cuts]
     return (np.array(out), where, tension) if where else (None, [], 0.0)
+
+
+def _stretches(inner: np.ndarray) -> list[tuple[int, int]]:
+    """``(first, last)`` element of each stretch of ``inner``, stretches fewer than
+    :data:`KEPT` elements apart joined."""
+    idx = np.flatnonzero(inner)
+    breaks = np.flatnonzero(np.diff(idx) > KEPT)
+    return list(zip(np.r_[idx[0], idx[breaks + 1]], np.r_[idx[breaks], idx[-1]]))
+
+
+def _widened(cuts: list, a: float, b: float) -> list:
+    """``cuts`` of the contact ``(a, b)``, each moved out by half its width, at most halfway to
+    the contact's edges and a quarter of the way to the cut beside it (whose own move takes
+    another quarter: the compressed part between them keeps half its width)."""
+    out = []
+    for k, (lo, hi) in enumerate(cuts):
+        w = 0.5 * (hi - lo)
+        low = 0.5 * (a + lo) if k == 0 else lo - 0.25 * (lo - cuts[k - 1][1])
+        high = 0.5 * (hi + b) if k == len(cuts) - 1 else hi + 0.25 * (cuts[k + 1][0] - hi)
+        out.append((max(lo - w, low), min(hi + w, high)))
+    return out

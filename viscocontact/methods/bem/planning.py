@@ -131,7 +131,7 @@ def _cohesive(adhesion) -> bool:
     return adhesion.work_of_adhesion > 0 and hasattr(adhesion, "quasi_static_zone")
 
 
-def _edge_step(problem, spec=None) -> PlanStep:
+def _edge_step(problem, spec=None, kernel=None) -> PlanStep:
     adh = problem.adhesion
     if _cohesive(adh) and spec is not None:
         return _cohesive_step(problem, spec)
@@ -142,10 +142,17 @@ def _edge_step(problem, spec=None) -> PlanStep:
     if dx == 0.0:
         return PlanStep(stage="edges", choice="energy balance in the limit δX → 0: K_e K̃²/4",
                         reason="edge_perturbation = 0: closed form, no enlarged solves")
+    from ...adhesion.energy_balance import EDGE_RELEASE_ACCURACY, relaxing_within
+
+    share, length = relaxing_within(kernel, dx)
     return PlanStep(stage="edges",
                     choice=f"energy balance with δX = {dx:g}: one bordered solve per edge "
                            "(2n new rows and columns, Schur complement with the base LU)",
-                    reason="finite edge advance (eqs. 4.12-4.14)")
+                    reason="finite edge advance (eqs. 4.12-4.14)" + (
+                        f"; {100 * share:.3g} % of the glassy modulus relaxes within δX (from a "
+                        f"relaxation length of {length:.3g}): the result will say it lies "
+                        "outside the model (docs/edges.md)"
+                        if share > EDGE_RELEASE_ACCURACY else ""))
 
 
 def bem_steps(problem, prepared) -> tuple:
@@ -156,7 +163,7 @@ def bem_steps(problem, prepared) -> tuple:
     adhesive_load = problem.mean_pressure is not None and problem.adhesion.work_of_adhesion > 0
     control = (f"load control, p̃∞ = {problem.mean_pressure:g}" if problem.mean_pressure is not None
                else f"penetration control, Δ̃ = {problem.penetration:g}")
-    steps = [_mesh_step(problem, spec, kernel), _edge_step(problem, spec),
+    steps = [_mesh_step(problem, spec, kernel), _edge_step(problem, spec, kernel),
              PlanStep(stage="path", choice=control + "; approach from first touch unless an "
                       "initial contact set is given",
                       reason="adhesive equilibria are path dependent; one scene, one answer"),

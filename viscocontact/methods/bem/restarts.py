@@ -18,6 +18,7 @@ from ...contact.mesh import element_counts, same_zones, zone_patterns
 from ...contact.topology import TopologyChange, repair
 from ...solvers.base import Status
 from .checks import tensile_split
+from .meshing import SMALLEST_RESOLVED
 from .sets import MIN_GAP, MIN_WIDTH, Control
 from .state import Outcome, State
 
@@ -164,6 +165,16 @@ class Restarts:
         """The converged edges ``x`` checked: births, splits, meshes inside the contacts, and
         the zones of its own edges (``polish``); the state, or the edges to restart from."""
         eq = self.eq
+        kept = resolved_contacts(x)
+        if kept is not None:
+            reason = (f"{(len(x) - len(kept)) // 2} contact(s) narrower than the mesh resolves "
+                      f"({SMALLEST_RESOLVED:g}) detached")
+            if not self.changes:
+                return State(outcome=Outcome.NOT_CONVERGED, edges=x, message=reason,
+                             change="detachment")
+            eq.log.event(reason)
+            eq.log.records.append({"kind": "detachment", "control": self.control.value})
+            return kept
         fields, ctx, r = system.evaluate(x)
         size = float(np.max(np.abs(r)))
         xs, gap = eq.checks.gap_outside(fields)          # once, for both checks
@@ -306,6 +317,17 @@ def refined_where_alternating(eq, counts, n_contacts: int, where, tension: float
     return None
 
 
+def resolved_contacts(x) -> np.ndarray | None:
+    """The edges ``x`` without the contacts narrower than the shortest length the mesh resolves
+    (:data:`~.meshing.SMALLEST_RESOLVED`), or None when every contact is wider. A solve can
+    converge on such a contact: an adhesionless one closing to a point at zero load, whose
+    residuals vanish with its width, stopped at Ã = 2e-8 once each overloaded stretch of a
+    contact opened on its own (the edges' motion detaches such contacts too,
+    :func:`~.relax._vanishing`)."""
+    gone = (x[1::2] - x[0::2]) < SMALLEST_RESOLVED
+    return np.asarray(x)[np.repeat(~gone, 2)] if np.any(gone) else None
+
+
 def split_strength(eq) -> float:
     """The tension inside a contact beyond which it splits: none for adhesion of vanishing
     range (0 without adhesion; infinite for the energy balance, whose closed interface has no
@@ -320,4 +342,4 @@ def _not_converged(x, fields, ctx, size, message) -> State:
                  residual=size, message=message)
 
 
-__all__ = ["REFINED_TENSION", "Restarts", "refined_where_alternating"]
+__all__ = ["REFINED_TENSION", "Restarts", "refined_where_alternating", "resolved_contacts"]
