@@ -89,6 +89,17 @@ def test_plan_of_an_adhesive_viscoelastic_half_plane():
     assert "only when asked" in plan["fields"].choice
 
 
+@pytest.mark.parametrize("zeta, outside", [(5e-4, True), (2e-3, False)])
+def test_plan_says_when_the_edge_advance_is_past_the_relaxation_length(zeta, outside):
+    """A standard linear solid (β = 10) relaxes 90 % of its glassy modulus at ζ/β: with
+    δX = 1e-4 past it (ζ = 5e-4) the plan says the result will lie outside the model."""
+    reason = {s.stage: s for s in _problem(adhesion=EnergyBalance(gamma=1e-4), zeta=zeta)
+              .plan().steps}["edges"].reason
+    assert ("90 % of the glassy modulus relaxes within δX (from a relaxation length of 5e-05)"
+            in reason) is outside
+    assert ("outside the model" in reason) is outside
+
+
 def test_plan_skips_what_an_elastic_adhesionless_scene_does_not_need():
     plan = {s.stage: s for s in _problem(rheology=Elastic()).plan().steps}
     assert plan["kernel"].choice.startswith("elastic")
