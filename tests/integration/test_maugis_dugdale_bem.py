@@ -488,6 +488,7 @@ def test_a_compressed_hump_between_two_overloaded_stretches_stays_in_contact():
     edges, where, _ = split(hump=KEPT - 1)
     assert len(edges) == 4 and edges[1:3] == pytest.approx([mesh.left[20], mesh.right[43]])
 
+
 def _rough_md_range(h0_nm: float):
     """:func:`_rough_md` with zones of range ``h0_nm`` nanometres."""
     from pathlib import Path
