@@ -164,6 +164,27 @@ def test_a_contact_narrower_than_the_mesh_resolves_detaches_while_it_narrows():
     assert out[4:6].tolist() == after[4:6].tolist()              # above the floor: kept
 
 
+def test_a_proposed_step_is_shortened_to_its_reach_without_counting_as_a_try():
+    """A step whose move would go past the reach the tolerance allows is shortened within the
+    proposal (no evaluation, no try of the motion's budget): a narrow contact closing at a
+    speed of order one gets a move within reach at once, from a step a thousand times too
+    long."""
+    from viscocontact.methods.bem.relax import _Motion, _proposed, _scale
+
+    tolerance = 0.02
+    x = np.array([1.0, 1.0 + 1e-4])                   # a contact 1e-4 wide
+    r = np.array([-1.0, 1.0])                          # both edges move inwards at speed 1
+    J = np.diag([1e-3, 1e-3])
+    m = _Motion(system=None, x=x, r=r, J=J, h=0.1)
+    out = _proposed(m, r, J, tolerance)
+    assert out is not None
+    move, h = out
+    reach = np.max(np.abs(move) / _scale(x)) / np.sqrt(2 * tolerance)
+    assert reach <= 1.0
+    assert reach > 0.5                                 # not shortened past what it needs
+    assert m.h == h < 1e-4
+
+
 class _Edges:
     """Two edges: the first at rest, the second's residual either jumps from -0.25 to 2e-3
     across ``AT`` (``jump``) or passes through zero there with the slope 500."""

@@ -72,6 +72,8 @@ from .state import Outcome, State
 SETTLED = 1e3
 #: The largest step times the fastest growth rate of an unstable mode of the motion.
 UNSTABLE_STEP = 0.5
+#: Shortenings of a proposed step to keep its move within reach before it counts as a try.
+REACH_TRIES = 8
 #: The motion's mesh zones are remade for its edges in its first this many steps, which move the
 #: edges the most (a residual on the new zones at the step's end), and at most this
 #: many times when it nears its end (the equilibrium solve there remakes them: the motion must
@@ -458,25 +460,34 @@ def _proposed(m: "_Motion", r: np.ndarray, J: np.ndarray,
               tolerance: float) -> tuple[np.ndarray, float] | None:
     """The move of the motion's next step from its residual ``r`` and Jacobian ``J``, and its
     length (also ``m.h``); None when the step is to be tried again shorter (``m.h``
-    shortened)."""
+    shortened: its linear solve failed).
+
+    The move is shortened here, without an evaluation, until it keeps within the reach the
+    tolerance allows: a proposal is not a step, and only steps count against the motion's
+    budget (on campaign seed 220 a contact that narrows to nothing took three proposals for
+    each step, 18491 in all, and spent the budget of 2000 on them)."""
     h = (0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(r), 1e-300))) if m.h is None
          else m.h)          # the first step moves the fastest edge a twentieth of a scale
     # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign past
     # 2/h): the step resolves the growth of every unstable mode of the motion
-    m.h = h = min(h, UNSTABLE_STEP / _growth(J))
-    move = _step(r, J, h)
-    if move is None:
-        m.h, m.J = 0.25 * h, None
-        return None
-    reach = float(np.max(np.abs(move) / _scale(m.x))) / np.sqrt(2.0 * tolerance)
-    if reach > 1.0:
+    h = min(h, UNSTABLE_STEP / _growth(J))
+    for _ in range(REACH_TRIES):
+        m.h = h
+        move = _step(r, J, h)
+        if move is None:
+            m.h, m.J = 0.25 * h, None
+            return None
+        reach = float(np.max(np.abs(move) / _scale(m.x))) / np.sqrt(2.0 * tolerance)
+        if reach <= 1.0:
+            return move, h
         # the local error h/2·|Δr| sees the residual at the step's ends only: where it is flat
         # (a Maugis-Dugdale tip below the profile holds it at -K̃c) the step would grow past
         # the equilibrium between. Speeds that change over a half-width leave a move of δ an
-        # error of δ²/2 half-widths: the tolerance bounds the move itself
-        m.h = h / reach
-        return None
-    return move, h
+        # error of δ²/2 half-widths: the tolerance bounds the move itself (the implicit move
+        # grows more slowly than h: a second shortening is rarely needed)
+        h = h / reach
+    m.h = h
+    return None
 
 
 def _end(eq, m: "_Motion", landed: np.ndarray, changed: bool, control: Control):
