@@ -13,8 +13,8 @@ control and solver.
 
 ``--long-limit S`` gives the scenes that reach the time limit a second solve with ``S`` seconds:
 a slow scene is then told from one that does not converge, and its record keeps the first
-time and message under ``"first"``. With ``--long-only`` that
-second pass runs on the time-limited scenes of an existing ``--out`` and writes it back.
+time and message under ``"first"``. With ``--long-only`` that second pass runs on the
+time-limited scenes of an existing ``--out`` and writes it back.
 
 ``--dense-solves N`` sets the limit to ``N`` times one ``numpy.linalg.solve`` of a 2000 × 2000
 system on one BLAS thread, measured before the run (``adhesive_point.py``'s yardstick): the same
@@ -116,7 +116,8 @@ def run(seeds, *, workers: int, time_limit: float, grace: float, progress=print,
 def long_pass(records: list[dict], *, workers: int, long_limit: float, grace: float,
               progress=print) -> list[dict]:
     """``records`` with their time-limited scenes solved again under ``long_limit``: each
-    such record is replaced by the second one, which keeps the first limit and time."""
+    such record is replaced by the second one, which keeps the first one's time and message
+    under ``"first"``."""
     slow = [r for r in records if r["outcome"] == "time-limit" and "first" not in r]
     if not slow:
         return records
@@ -261,7 +262,7 @@ def main(argv=None) -> int:
     if args.long_only:
         head = json.loads(args.out.read_text(encoding="utf-8"))
         records, earlier = head["records"], head["wall_seconds"]
-        args.time_limit, args.workers = head["time_limit"], head["workers"]
+        args.time_limit = head["time_limit"]          # the first pass's, as recorded
     else:
         records = run(seeds, workers=args.workers, time_limit=args.time_limit,
                       grace=args.grace, progress=progress, save=save)

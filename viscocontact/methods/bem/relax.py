@@ -460,7 +460,8 @@ def _proposed(m: "_Motion", r: np.ndarray, J: np.ndarray,
               tolerance: float) -> tuple[np.ndarray, float] | None:
     """The move of the motion's next step from its residual ``r`` and Jacobian ``J``, and its
     length (also ``m.h``); None when the step is to be tried again shorter (``m.h``
-    shortened: its linear solve failed).
+    shortened: its linear solve failed, or its move stayed out of reach after
+    :data:`REACH_TRIES` shortenings).
 
     The move is shortened here, without an evaluation, until it keeps within the reach the
     tolerance allows: a proposal is not a step, and only steps count against the motion's
@@ -483,8 +484,7 @@ def _proposed(m: "_Motion", r: np.ndarray, J: np.ndarray,
         # the local error h/2·|Δr| sees the residual at the step's ends only: where it is flat
         # (a Maugis-Dugdale tip below the profile holds it at -K̃c) the step would grow past
         # the equilibrium between. Speeds that change over a half-width leave a move of δ an
-        # error of δ²/2 half-widths: the tolerance bounds the move itself (the implicit move
-        # grows more slowly than h: a second shortening is rarely needed)
+        # error of δ²/2 half-widths: the tolerance bounds the move itself
         h = h / reach
     m.h = h
     return None
