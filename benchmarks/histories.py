@@ -103,8 +103,12 @@ def main(argv=None) -> int:
                            "failed": failed,
                            "evaluations": {str(p): c["evaluations"] for p, c in curves.items()},
                            "seconds": {str(p): c["seconds"] for p, c in curves.items()},
-                           "passes": (worst["area"] <= AREA_TOL
-                                      and worst["friction"] <= FRICTION_TOL and failed == 0)}
+                           "passes": bool(worst["area"] <= AREA_TOL
+                                          and worst["friction"] <= FRICTION_TOL
+                                          and failed == 0),
+                           "curves": {str(p): {k: np.asarray(c[k]).tolist() for k in
+                                               ("zeta", "area", "friction", "converged")}
+                                      for p, c in curves.items()}}
                     rows.append(row)
                     print(f"{label:>14} {load:>5g} {history:>10} {worst['area']:>9.2e} "
                           f"{worst['friction']:>9.2e} {failed:>6d} "
