@@ -467,7 +467,8 @@ def _proposed(m: "_Motion", r: np.ndarray, J: np.ndarray,
     tolerance allows: a proposal is not a step, and only steps count against the motion's
     budget (on campaign seed 220 a contact that narrows to nothing took three proposals for
     each step, 18491 in all, and spent the budget of 2000 on them)."""
-    h = (0.05 * float(np.min(_scale(m.x) / np.maximum(np.abs(r), 1e-300))) if m.h is None
+    scale = _scale(m.x)
+    h = (0.05 * float(np.min(scale / np.maximum(np.abs(r), 1e-300))) if m.h is None
          else m.h)          # the first step moves the fastest edge a twentieth of a scale
     # implicit Euler damps a growing mode whose rate exceeds 1/h (and flips its sign past
     # 2/h): the step resolves the growth of every unstable mode of the motion
@@ -478,7 +479,7 @@ def _proposed(m: "_Motion", r: np.ndarray, J: np.ndarray,
         if move is None:
             m.h, m.J = 0.25 * h, None
             return None
-        reach = float(np.max(np.abs(move) / _scale(m.x))) / np.sqrt(2.0 * tolerance)
+        reach = float(np.max(np.abs(move) / scale)) / np.sqrt(2.0 * tolerance)
         if reach <= 1.0:
             return move, h
         # the local error h/2·|Δr| sees the residual at the step's ends only: where it is flat
