@@ -318,7 +318,7 @@ def _ramped(problem, ramp, spec: PointSpec, path: _Path):
                                    step=ramp.tolerance).to_json()
         return result
     state = RampState.from_json(spec.ramp)
-    direction = 1.0 if math.log10(zeta) > state.last.log_zeta else -1.0
+    direction = state.heading(math.log10(zeta))
     march = Ramp(history=ramp, solve=solve, direction=direction)
     try:
         state, result = march.record(attrs.evolve(state, step=direction * abs(state.step)),

@@ -76,18 +76,27 @@ class Node:
 
 @attrs.frozen(kw_only=True)
 class RampState:
-    """Where the path stands: its last two nodes (the older may be None) and the next step
-    (decades of ζ, signed by the direction of the ramp)."""
+    """Where the path stands: its last two nodes (the older may be None), the next step
+    (decades of ζ) and the ramp's direction (+1 up in ζ, -1 down; 0 before the path's first
+    step, at the chain's first point)."""
 
     older: Node | None
     last: Node
     step: float
+    direction: float = 0.0
+
+    def heading(self, log_zeta: float) -> float:
+        """The ramp's direction: its own once it has stepped (a recorded ζ that the path has
+        already passed lies behind it, not ahead), else towards ``log_zeta``."""
+        if self.direction:
+            return self.direction
+        return 1.0 if log_zeta > self.last.log_zeta else -1.0
 
     def to_json(self) -> str:
         def node(n):
             return None if n is None else [n.log_zeta, list(n.edges), n.full]
         return json.dumps({"older": node(self.older), "last": node(self.last),
-                           "step": self.step})
+                           "step": self.step, "direction": self.direction})
 
     @classmethod
     def from_json(cls, text: str) -> "RampState":
@@ -95,7 +104,11 @@ class RampState:
 
         def node(v):
             return None if v is None else Node(log_zeta=v[0], edges=tuple(v[1]), full=v[2])
-        return cls(older=node(data["older"]), last=node(data["last"]), step=data["step"])
+        older, step = node(data["older"]), data["step"]
+        # a state written without its direction: a path that has stepped signs its step
+        stepped = math.copysign(1.0, step) if older is not None else 0.0
+        return cls(older=older, last=node(data["last"]), step=step,
+                   direction=float(data.get("direction", stepped)))
 
 
 def event(kind: str, zeta: float, before: Node, after: Node, **extra) -> dict[str, Any]:
@@ -177,11 +190,12 @@ class Ramp:
             if node is not None and change is None and error <= ramp.tolerance:
                 grow = 2.0 if error == 0 else min(2.0, 0.9 * math.sqrt(ramp.tolerance / error))
                 nxt = min(ramp.largest_step, h * max(grow, 0.5))
-                return RampState(older=last, last=node, step=self.direction * nxt), result
+                return RampState(older=last, last=node, step=self.direction * nxt,
+                                 direction=self.direction), result
             if node is not None and change is not None and h <= ramp.tolerance * (1 + 1e-9):
                 self.events.append(event(change, 10.0 ** target, last, node))
-                return RampState(older=last, last=node,
-                                 step=self.direction * ramp.tolerance), result
+                return RampState(older=last, last=node, step=self.direction * ramp.tolerance,
+                                 direction=self.direction), result
             if smallest:
                 return self.jump(last, target, result)
             h = max(ramp.smallest_step, 0.5 * h if node is None or change is not None
@@ -202,8 +216,8 @@ class Ramp:
         node = Node.of(target, result)
         self.events.append(event("jump", 10.0 ** target, last, node,
                                  area=[None, float(result.area)]))
-        return RampState(older=None, last=node,
-                         step=self.direction * self.history.tolerance), result
+        return RampState(older=None, last=node, step=self.direction * self.history.tolerance,
+                         direction=self.direction), result
 
     def record(self, state: RampState, zeta: float) -> tuple[RampState, Any]:
         """March until the path reaches or passes ``zeta``, then solve the recorded point from

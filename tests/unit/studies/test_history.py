@@ -58,7 +58,7 @@ def march(ramp, zetas, start=-1.0):
     state = RampState(older=None, last=first, step=ramp.tolerance)
     out, events = [], []
     for zeta in zetas:
-        steps = Ramp(history=ramp, solve=solve, direction=1.0)
+        steps = Ramp(history=ramp, solve=solve, direction=state.heading(math.log10(zeta)))
         state, result = steps.record(state, zeta)
         out.append(result)
         events += steps.events
@@ -118,6 +118,20 @@ def test_the_ramp_records_the_same_values_at_any_sampling():
 
     path_fine, path_coarse = path(calls_fine), path(calls_coarse)
     assert path_coarse == path_fine[:len(path_coarse)]
+
+
+def test_the_ramp_state_keeps_its_direction_past_a_recorded_zeta():
+    """A path that has stepped past the next recorded ζ records it behind itself and goes on
+    in its own direction; a state written without a direction reads it from its step."""
+    first = Node(log_zeta=0.0, edges=(-1.0, 1.0), full=False)
+    ahead = Node(log_zeta=0.3, edges=(-1.1, 1.1), full=False)
+    assert RampState(older=None, last=first, step=0.02).heading(-0.5) == -1.0
+    state = RampState(older=first, last=ahead, step=-0.04, direction=-1.0)
+    assert state.heading(1.0) == -1.0 and RampState.from_json(state.to_json()) == state
+    old = '{"older": [0.0, [-1.0, 1.0], false], "last": [0.3, [-1.1, 1.1], false], "step": 0.04}'
+    assert RampState.from_json(old).heading(0.2) == 1.0
+    first_only = '{"older": null, "last": [0.3, [-1.1, 1.1], false], "step": 0.02}'
+    assert RampState.from_json(first_only).heading(0.2) == -1.0
 
 
 def test_the_step_control_keeps_the_secant_error_within_the_tolerance():
