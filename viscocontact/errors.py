@@ -9,9 +9,12 @@ A computation stopped by a :func:`~viscocontact.deadline.deadline` raises
 """
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import sys
 import warnings
 from types import FrameType
+from typing import Iterator
 
 
 class ViscoContactError(Exception):
@@ -107,9 +110,35 @@ def _internal(frame) -> bool:
             or frame.f_code.co_filename.startswith("<attrs generated"))
 
 
+#: The words a result's message carries when it lies outside the model (the reason follows).
+OUTSIDE_MODEL = "outside the model"
+
+#: The warnings that :func:`held` keeps in this context instead of showing: (categories, list).
+_HELD: contextvars.ContextVar = contextvars.ContextVar("viscocontact_held", default=None)
+
+
+@contextlib.contextmanager
+def held(*categories: type[Warning]) -> Iterator[list[str]]:
+    """Within the block, :func:`warn_user`'s warnings of ``categories`` are kept in the yielded
+    list (their messages) instead of shown: a study stores a point's doubts in its record and
+    says once how many points have them, rather than once per solve. Per thread and task (a
+    context variable), so concurrent points keep their own."""
+    kept: list[str] = []
+    token = _HELD.set((categories, kept))
+    try:
+        yield kept
+    finally:
+        _HELD.reset(token)
+
+
 def warn_user(message: str, category: type[Warning]) -> None:
     """``warnings.warn`` attributed to the first caller outside viscocontact and attrs, so that
-    the warning names the user's line (and the default filter shows it once per line)."""
+    the warning names the user's line (and the default filter shows it once per line); kept
+    instead within :func:`held` of its category."""
+    holding = _HELD.get()
+    if holding is not None and issubclass(category, holding[0]):
+        holding[1].append(message)
+        return
     level = 2
     frame: FrameType | None = sys._getframe(1)
     while frame is not None and _internal(frame):

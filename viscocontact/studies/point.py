@@ -168,13 +168,15 @@ def solve_point(scene: Mapping[str, Any], spec: PointSpec,
         One value per :data:`COLUMNS` key, plus ``"fields"`` (a dict of arrays or None).
     """
     from .._blas import single_blas_thread
-
     from ..deadline import deadline
+    from ..errors import ModelValidityWarning, held
 
     t0 = time.perf_counter()
     record = _skeleton(scene, spec)
     try:
-        with single_blas_thread(), deadline(time_limit):
+        # a point's doubts are in its message (outside the model: why), not one warning per
+        # solve of its path; the study says once how many points have them
+        with single_blas_thread(), deadline(time_limit), held(ModelValidityWarning):
             if "surface" in scene:
                 result, started_from, path = _solve_areal(scene, spec)
             else:

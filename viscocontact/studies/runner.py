@@ -110,7 +110,20 @@ def _compute(study: Study, path: Path, pool, *, resume: bool, overwrite: bool,
         finally:
             bar.close()
         storage.set_complete(path, True)
+        _warn_outside(records)
         return load_study(path)
+
+
+def _warn_outside(records) -> None:
+    """One :class:`~viscocontact.errors.ModelValidityWarning` for the points whose result lies
+    outside the model (their message says why)."""
+    from ..errors import OUTSIDE_MODEL, ModelValidityWarning, warn_user
+
+    rows = [r for chain in records.values() for r in chain]
+    outside = sum(OUTSIDE_MODEL in str(r.get("message", "")) for r in rows)
+    if outside:
+        warn_user(f"{outside} of {len(rows)} points lie outside the model: their 'message' "
+                  f"column says why (docs/edges.md)", ModelValidityWarning)
 
 
 def _warn_uncertified(study: Study, record, row: int) -> None:

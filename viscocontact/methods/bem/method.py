@@ -19,7 +19,7 @@ import attrs
 import numpy as np
 
 from ...contact.fields import dissipated_friction, edge_flux_friction, friction
-from ...errors import ModelValidityWarning, warn_user
+from ...errors import OUTSIDE_MODEL, ModelValidityWarning, warn_user
 from ...result import ContactResult, SolveStatus
 from ..base import SolutionMethod
 from .checks import Checks
@@ -178,8 +178,8 @@ class Solve:
                                          extras["friction_edges"]) if converged else None)
                 if why:
                     extras["outside_model"] = why
-                    message = f"{message}; outside the model: {why}"
-                    warn_user(f"outside the model: {why}", ModelValidityWarning)
+                    message = f"{message}; {OUTSIDE_MODEL}: {why}"
+                    warn_user(f"{OUTSIDE_MODEL}: {why}", ModelValidityWarning)
             _, gap = self.checks.gap_outside(fields)
             fld = self.checks.fields_on_grid(fields) if want_fields else None
             extras["conformity"] = self.checks.conformity(
