@@ -135,6 +135,8 @@ def test_a_rough_contact_retracted_past_its_fold_detaches():
     result = ROUGH.solve(initial=np.array([1.84377635, 2.23341527]), prepared=prepared)
     assert result.status.value == "no_contact", result.message
     assert any("detached every contact" in e for e in result.extras["events"])
+    assert result.extras["path_events"][-1] == {"kind": "detachment", "control": -0.3,
+                                                "contacts": 0.0}
     held = attrs.evolve(ROUGH, penetration=-0.21).solve(
         initial=np.array([1.82375803, 2.25088039]), prepared=prepared)
     assert held.converged and held.n_contacts == 1, held.message

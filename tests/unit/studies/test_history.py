@@ -154,6 +154,34 @@ def test_the_step_control_keeps_the_secant_error_within_the_tolerance():
     assert counts[1] > 2 * counts[0]
 
 
+LOSS, CLOSURE = 0.2, 0.55     # log10 ζ where a second contact detaches and the contact closes
+
+
+def closing(log_zeta, start):
+    """Two contacts up to LOSS, one up to CLOSURE, full contact past it (either way in ζ)."""
+    if log_zeta > CLOSURE:
+        return Fake(True, np.zeros(0), full_contact=True)
+    a = half_width(log_zeta)
+    return Fake(True, np.array([-a, a] + ([2.0, 2.3] if log_zeta < LOSS else [])))
+
+
+@pytest.mark.parametrize("direction", [1.0, -1.0])
+def test_the_ramp_locates_a_loss_a_closure_and_an_opening_within_its_tolerance(direction):
+    """Up in ζ: a contact lost, then closure; down: the contact opens, then one is born. Each
+    event is located within the tolerance past its ζ, in the ramp's direction."""
+    ramp = SpeedRamp(tolerance=0.02)
+    steps = Ramp(history=ramp, solve=lambda z, e: closing(math.log10(z), e), direction=direction)
+    start = 0.0 if direction > 0 else 0.8
+    state = RampState(older=None, last=Node.of(start, closing(start, None)), step=ramp.tolerance)
+    state, _ = steps.record(state, 10 ** (start + direction * 0.8))
+    found = [(e["kind"], math.log10(e["zeta"]), e["contacts"]) for e in steps.events]
+    expected = ([("loss", LOSS, [2, 1]), ("closure", CLOSURE, [1, -1])] if direction > 0
+                else [("opening", CLOSURE, [-1, 1]), ("birth", LOSS, [1, 2])])
+    assert [(k, c) for k, _, c in found] == [(k, c) for k, _, c in expected]
+    for (_, at, _), (_, where, _) in zip(found, expected):
+        assert 0 <= direction * (at - where) <= ramp.tolerance + 1e-12
+
+
 @pytest.mark.parametrize("tol", [0.02, 0.005])
 def test_the_branch_end_jumps_by_the_stated_rule_at_any_tolerance(tol):
     """Past the fold no step converges: the ramp jumps (the edges' motion) at the ζ just past

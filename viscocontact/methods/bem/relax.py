@@ -431,6 +431,8 @@ class Relaxation:
             self.eq.log.event("the edges' motion closed the contact")
             return State.full_contact()
         self.eq.log.event("the edges' motion detached every contact")
+        self.eq.log.records.append({"kind": "detachment", "control": control.value,
+                                    "contacts": 0.0})
         if control.is_load and control.value > 0:
             # a compressive load needs a contact: found afresh from the first touch
             return self.eq.solve(landed, control, use_fallback=False, **self._finish)
