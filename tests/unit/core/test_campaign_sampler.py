@@ -74,6 +74,7 @@ def test_every_drawn_scene_builds(tables):
     ("no equilibrium at the target load on the approach branch", "scene"),
     ("the equilibrium found is unstable under load control (dp̃∞/dΔ̃ = -1)", "scene"),
     ("contact set cycles: a merged contact carries tension", "path"),
+    ("met a contact set without a valid field (no zone lengths bound the stress)", "path"),
     ("something else", "unclassified")])
 def test_classify(message, kind):
     assert classify(message) == kind
