@@ -323,8 +323,7 @@ def _ramped(problem, ramp, spec: PointSpec, path: _Path):
     direction = state.heading(math.log10(zeta))
     march = Ramp(history=ramp, solve=solve, direction=direction)
     try:
-        state, result = march.record(attrs.evolve(state, step=direction * abs(state.step)),
-                                     zeta)
+        state, result = march.record(state, zeta)
     except RampFailed as failed:
         path.events = march.events
         from ..result import SolveStatus

@@ -76,9 +76,9 @@ class Node:
 
 @attrs.frozen(kw_only=True)
 class RampState:
-    """Where the path stands: its last two nodes (the older may be None), the next step
-    (decades of ζ) and the ramp's direction (+1 up in ζ, -1 down; 0 before the path's first
-    step, at the chain's first point)."""
+    """Where the path stands: its last two nodes (the older may be None), the length of the
+    next step (decades of ζ) and the ramp's direction (+1 up in ζ, -1 down; 0 before the
+    path's first step, at the chain's first point)."""
 
     older: Node | None
     last: Node
@@ -105,7 +105,7 @@ class RampState:
         def node(v):
             return None if v is None else Node(log_zeta=v[0], edges=tuple(v[1]), full=v[2])
         older, step = node(data["older"]), data["step"]
-        # a state written without its direction: a path that has stepped signs its step
+        # a state written without its direction: a path that had stepped signed its step
         stepped = math.copysign(1.0, step) if older is not None else 0.0
         return cls(older=older, last=node(data["last"]), step=step,
                    direction=float(data.get("direction", stepped)))
@@ -177,7 +177,7 @@ class Ramp:
 
     def advance(self, state: RampState) -> tuple[RampState, Any]:
         """One accepted step from ``state``: the new state and the result of its node."""
-        ramp, h = self.history, abs(state.step)
+        ramp, h = self.history, abs(state.step)     # a state written before: a signed step
         last = state.last
         while True:
             target = last.log_zeta + self.direction * h
@@ -190,11 +190,11 @@ class Ramp:
             if node is not None and change is None and error <= ramp.tolerance:
                 grow = 2.0 if error == 0 else min(2.0, 0.9 * math.sqrt(ramp.tolerance / error))
                 nxt = min(ramp.largest_step, h * max(grow, 0.5))
-                return RampState(older=last, last=node, step=self.direction * nxt,
+                return RampState(older=last, last=node, step=nxt,
                                  direction=self.direction), result
             if node is not None and change is not None and h <= ramp.tolerance * (1 + 1e-9):
                 self.events.append(event(change, 10.0 ** target, last, node))
-                return RampState(older=last, last=node, step=self.direction * ramp.tolerance,
+                return RampState(older=last, last=node, step=ramp.tolerance,
                                  direction=self.direction), result
             if smallest:
                 return self.jump(last, target, result)
@@ -216,7 +216,7 @@ class Ramp:
         node = Node.of(target, result)
         self.events.append(event("jump", 10.0 ** target, last, node,
                                  area=[None, float(result.area)]))
-        return RampState(older=None, last=node, step=self.direction * self.history.tolerance,
+        return RampState(older=None, last=node, step=self.history.tolerance,
                          direction=self.direction), result
 
     def record(self, state: RampState, zeta: float) -> tuple[RampState, Any]:
