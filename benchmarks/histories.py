@@ -5,11 +5,19 @@ history, and the curves are compared at the common ζ (the whole decades): Ã wi
 max(Ã, 0.1) and μ within 1e-2 of max(|μ|, 0.01). Prints one table row per scene, load and
 history and writes ``benchmarks/results/raw/histories.json``.
 
+The approach-retraction ``cycle`` is recorded in the penetration, at the scene's ζ (or
+``--cycle-zeta``): each
+``--loads`` value is then the turning penetration Δ̃ of a cycle from first touch (Δ̃ = 0) and
+back to detachment, recorded in steps of Δ̃/4 at one point "per decade", Δ̃/12 at three and
+Δ̃/32 at eight; the curves are compared at the common points of both branches (the steps of
+Δ̃/4 before the detachment's bisection), in Ã, μ and, beside them, the load p̃∞ (within 1e-3 of
+max(|p̃∞|, 0.01)).
+
 Usage::
 
     python benchmarks/histories.py [--scenes sinusoid,thesis_wavy,thesis_rough] [--seeds 0:5]
         [--loads 0.1,0.3,0.6] [--zetas 1e-4:1e2] [--per 1,3,8]
-        [--histories approach,speed-ramp] [--workers 2] [--elements N]
+        [--histories approach,speed-ramp,cycle] [--cycle-zeta Z] [--workers 2] [--elements N]
 """
 from __future__ import annotations
 
@@ -27,6 +35,8 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 SCENES = HERE.parent / "examples" / "scenes"
 AREA_TOL, FRICTION_TOL = 1e-3, 1e-2
+#: A cycle recorded at one point "per decade" steps a quarter of its turning penetration.
+CYCLE_STEPS = 4
 
 
 def sweep(scene, zetas, load, history, workers, elements, folder):
@@ -40,25 +50,56 @@ def sweep(scene, zetas, load, history, workers, elements, folder):
     data = vc.run_study(study, folder / "s.h5", overwrite=True, workers=workers, progress=None)
     p = data.points
     order = np.argsort(p["zeta"])
-    return {"zeta": p["zeta"][order], "area": p["area"][order],
-            "friction": p["friction"][order], "converged": p["converged"][order],
+    return {"x": np.log10(p["zeta"][order]), "zeta": p["zeta"][order],
+            "area": p["area"][order], "friction": p["friction"][order],
+            "load": p["mean_pressure"][order], "converged": p["converged"][order],
+            "evaluations": int(p["function_evaluations"].sum()),
+            "seconds": time.perf_counter() - t0}
+
+
+def cycle(scene, turn, per, workers, elements, folder, zeta=None):
+    """One approach-retraction cycle to the penetration ``turn`` in steps of
+    ``turn / (CYCLE_STEPS·per)``: its regular points (not the detachment's bisection) at
+    ``x``, the distance along the cycle (Δ̃ on the approach, ``2·turn - Δ̃`` on the way out)."""
+    import viscocontact as vc
+    from viscocontact.problem import Discretization
+
+    options = {} if elements is None else {"discretization": Discretization(elements=elements)}
+    step = turn / (CYCLE_STEPS * per)
+    if zeta is not None:
+        scene = scene.replace(zeta=zeta, physical=None)
+    study = vc.Cycle(scene=scene, max_penetration=turn, step=step, **options)
+    t0 = time.perf_counter()
+    data = vc.run_study(study, folder / "c.h5", overwrite=True, workers=workers, progress=None)
+    p = data.points
+    out = np.where(p["phase"] == "approach", p["target"], 2.0 * turn - p["target"])
+    regular = np.abs(out / step - np.round(out / step)) < 1e-6
+    return {"x": out[regular], "target": p["target"][regular], "area": p["area"][regular],
+            "friction": p["friction"][regular], "load": p["mean_pressure"][regular],
+            "converged": p["converged"][regular],
             "evaluations": int(p["function_evaluations"].sum()),
             "seconds": time.perf_counter() - t0}
 
 
 def compare(curves: dict[int, dict]) -> dict:
-    """Largest scaled differences at the common ζ against the finest recording."""
+    """Largest scaled differences at the common points (``x``: log10 ζ, or the distance along
+    a cycle) against the finest recording."""
     finest = curves[max(curves)]
-    worst_area = worst_friction = 0.0
-    for per, curve in curves.items():
-        for z, a, m in zip(curve["zeta"], curve["area"], curve["friction"]):
-            i = int(np.argmin(np.abs(np.log(finest["zeta"] / z))))
-            if abs(math.log(finest["zeta"][i] / z)) > 1e-9:
+    worst = {"area": 0.0, "friction": 0.0, "load": 0.0}
+    floors = {"area": 0.1, "friction": 0.01, "load": 0.01}
+    for curve in curves.values():
+        for j, x in enumerate(curve["x"]):
+            i = int(np.argmin(np.abs(finest["x"] - x)))
+            if abs(finest["x"][i] - x) > 1e-9:
                 continue
-            worst_area = max(worst_area, abs(a - finest["area"][i]) / max(abs(a), 0.1))
-            worst_friction = max(worst_friction,
-                                 abs(m - finest["friction"][i]) / max(abs(m), 0.01))
-    return {"area": worst_area, "friction": worst_friction}
+            for key, floor in floors.items():
+                a, b = float(curve[key][j]), float(finest[key][i])
+                if np.isnan(a) or np.isnan(b):
+                    # no contact: no friction (in both, they agree)
+                    worst[key] = worst[key] if np.isnan(a) and np.isnan(b) else np.inf
+                    continue
+                worst[key] = max(worst[key], abs(a - b) / max(abs(a), floor))
+    return worst
 
 
 def main(argv=None) -> int:
@@ -72,6 +113,8 @@ def main(argv=None) -> int:
     parser.add_argument("--zetas", default="1e-4:1e2", help="START:STOP in whole decades")
     parser.add_argument("--per", default="1,3,8", help="points per decade")
     parser.add_argument("--histories", default="approach,speed-ramp")
+    parser.add_argument("--cycle-zeta", type=float, default=None,
+                        help="ζ of the cycles (default: the scene's)")
     parser.add_argument("--workers", type=int, default=1)
     parser.add_argument("--elements", type=int, default=None)
     parser.add_argument("--out", default=str(HERE / "results" / "raw" / "histories.json"))
@@ -81,8 +124,8 @@ def main(argv=None) -> int:
     decades = int(round(stop - start))
     pers = [int(v) for v in args.per.split(",")]
     rows = []
-    print(f"{'scene':>14} {'load':>5} {'history':>10} {'ΔÃ':>9} {'Δμ':>9} {'failed':>6} "
-          f"{'evaluations per recording':>28} {'s':>7}")
+    print(f"{'scene':>14} {'load':>5} {'history':>10} {'ΔÃ':>9} {'Δμ':>9} {'Δp̃∞':>9} "
+          f"{'failed':>6} {'evaluations per recording':>28} {'s':>7}")
     for name in args.scenes.split(","):
         base = vc.Scene.from_toml(SCENES / f"{name}.toml")
         seeds = parse_seeds(args.seeds) if name == "thesis_rough" else [None]
@@ -94,6 +137,11 @@ def main(argv=None) -> int:
                     curves = {}
                     with tempfile.TemporaryDirectory() as folder:
                         for per in pers:
+                            if history == "cycle":
+                                curves[per] = cycle(scene, load, per, args.workers,
+                                                    args.elements, Path(folder),
+                                                    args.cycle_zeta)
+                                continue
                             zetas = np.logspace(start, stop, decades * per + 1)
                             curves[per] = sweep(scene, zetas, load, history, args.workers,
                                                 args.elements, Path(folder))
@@ -107,11 +155,11 @@ def main(argv=None) -> int:
                                           and worst["friction"] <= FRICTION_TOL
                                           and failed == 0),
                            "curves": {str(p): {k: np.asarray(c[k]).tolist() for k in
-                                               ("zeta", "area", "friction", "converged")}
+                                               ("x", "area", "friction", "load", "converged")}
                                       for p, c in curves.items()}}
                     rows.append(row)
                     print(f"{label:>14} {load:>5g} {history:>10} {worst['area']:>9.2e} "
-                          f"{worst['friction']:>9.2e} {failed:>6d} "
+                          f"{worst['friction']:>9.2e} {worst['load']:>9.2e} {failed:>6d} "
                           f"{'/'.join(str(c['evaluations']) for c in curves.values()):>28} "
                           f"{sum(c['seconds'] for c in curves.values()):>7.1f}", flush=True)
     out = Path(args.out)
