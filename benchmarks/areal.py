@@ -1,20 +1,20 @@
 """The areal spectral method: grid size against time, iterations and memory.
 
     python benchmarks/areal.py [--sizes 128,256,512,1024] [--zeta 1] [--load 1.0] [--seeds 0]
-                               [--workers 2] [--repeats 1] [--out benchmarks/results/raw/areal.json]
+                               [--workers 2] [--repeats 1]
+                               [--out benchmarks/results/raw/areal.json]
 
 The scene of the acceptance run: an isotropic self-affine surface (H = 0.8, wavenumbers 1 to
 ``--q-max`` in units of q0, rms slope 0.1, seed 0 or each of ``--seeds``; the same surface
-sampled on every grid) on a
-standard linear solid β = 10 at ζ = 1, adhesionless or with ``--adhesion`` (Maugis-Dugdale),
-load control (p̃∞ = 1: about 14 % contact without adhesion),
+sampled on every grid) on a standard linear solid β = 10 at ζ = 1, adhesionless or with
+``--adhesion`` (Maugis-Dugdale), load control (p̃∞ = 1: about 14 % contact without adhesion),
 default tolerance. Each size is solved in a fresh process (so its peak resident memory is its
 own), ``--repeats`` times; printed and written per size: wall and CPU seconds (medians), peak
 memory, area fraction, μ, the error estimate, and per grid of the ladder the solver's iterations
 (active-set steps) and operator products (FFT pairs), and the relative changes of Ã and μ from
-each grid to the next (what the error estimate is made of). The machine's load average is recorded
-beside them: on the shared two-core machine the wall time is the CPU time over the share of a
-core the process got.
+each grid to the next (what the error estimate is made of). The machine's load average is
+recorded beside them: on the shared two-core machine the wall time is the CPU time over the
+share of a core the process got.
 """
 from __future__ import annotations
 
