@@ -50,8 +50,8 @@ def sweep(scene, zetas, load, history, workers, elements, folder):
     data = vc.run_study(study, folder / "s.h5", overwrite=True, workers=workers, progress=None)
     p = data.points
     order = np.argsort(p["zeta"])
-    return {"x": np.log10(p["zeta"][order]), "zeta": p["zeta"][order],
-            "area": p["area"][order], "friction": p["friction"][order],
+    return {"x": np.log10(p["zeta"][order]), "area": p["area"][order],
+            "friction": p["friction"][order],
             "load": p["mean_pressure"][order], "converged": p["converged"][order],
             "evaluations": int(p["function_evaluations"].sum()),
             "seconds": time.perf_counter() - t0}
@@ -74,7 +74,7 @@ def cycle(scene, turn, per, workers, elements, folder, zeta=None):
     p = data.points
     out = np.where(p["phase"] == "approach", p["target"], 2.0 * turn - p["target"])
     regular = np.abs(out / step - np.round(out / step)) < 1e-6
-    return {"x": out[regular], "target": p["target"][regular], "area": p["area"][regular],
+    return {"x": out[regular], "area": p["area"][regular],
             "friction": p["friction"][regular], "load": p["mean_pressure"][regular],
             "converged": p["converged"][regular],
             "evaluations": int(p["function_evaluations"].sum()),
