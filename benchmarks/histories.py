@@ -39,46 +39,55 @@ AREA_TOL, FRICTION_TOL = 1e-3, 1e-2
 CYCLE_STEPS = 4
 
 
-def sweep(scene, zetas, load, history, workers, elements, folder):
+def recorded(study, folder, workers) -> tuple[dict, dict]:
+    """Run ``study`` in ``folder``: its points and what every recording reports (the failed
+    points, among all it solved; the evaluations; the seconds)."""
     import viscocontact as vc
+
+    t0 = time.perf_counter()
+    data = vc.run_study(study, folder / "study.h5", overwrite=True, workers=workers,
+                        progress=None)
+    p = data.points
+    return p, {"failed": int((~p["converged"]).sum()),
+               "evaluations": int(p["function_evaluations"].sum()),
+               "seconds": time.perf_counter() - t0}
+
+
+def _options(elements) -> dict:
     from viscocontact.problem import Discretization
 
-    options = {} if elements is None else {"discretization": Discretization(elements=elements)}
+    return {} if elements is None else {"discretization": Discretization(elements=elements)}
+
+
+def sweep(scene, zetas, load, history, workers, elements, folder):
+    import viscocontact as vc
+
     study = vc.Sweep(scene=scene, zetas=zetas, loads=[load], pair=False, history=history,
-                     **options)
-    t0 = time.perf_counter()
-    data = vc.run_study(study, folder / "s.h5", overwrite=True, workers=workers, progress=None)
-    p = data.points
+                     **_options(elements))
+    p, report = recorded(study, folder, workers)
     order = np.argsort(p["zeta"])
     return {"x": np.log10(p["zeta"][order]), "area": p["area"][order],
-            "friction": p["friction"][order],
-            "load": p["mean_pressure"][order], "converged": p["converged"][order],
-            "evaluations": int(p["function_evaluations"].sum()),
-            "seconds": time.perf_counter() - t0}
+            "friction": p["friction"][order], "load": p["mean_pressure"][order],
+            "converged": p["converged"][order], **report}
 
 
 def cycle(scene, turn, per, workers, elements, folder, zeta=None):
     """One approach-retraction cycle to the penetration ``turn`` in steps of
     ``turn / (CYCLE_STEPS·per)``: its regular points (not the detachment's bisection) at
-    ``x``, the distance along the cycle (Δ̃ on the approach, ``2·turn - Δ̃`` on the way out)."""
+    ``x``, the distance along the cycle (Δ̃ on the approach, ``2·turn - Δ̃`` on the way out);
+    its failed points counted among all of them."""
     import viscocontact as vc
-    from viscocontact.problem import Discretization
 
-    options = {} if elements is None else {"discretization": Discretization(elements=elements)}
     step = turn / (CYCLE_STEPS * per)
     if zeta is not None:
         scene = scene.replace(zeta=zeta, physical=None)
-    study = vc.Cycle(scene=scene, max_penetration=turn, step=step, **options)
-    t0 = time.perf_counter()
-    data = vc.run_study(study, folder / "c.h5", overwrite=True, workers=workers, progress=None)
-    p = data.points
+    study = vc.Cycle(scene=scene, max_penetration=turn, step=step, **_options(elements))
+    p, report = recorded(study, folder, workers)
     out = np.where(p["phase"] == "approach", p["target"], 2.0 * turn - p["target"])
     regular = np.abs(out / step - np.round(out / step)) < 1e-6
     return {"x": out[regular], "area": p["area"][regular],
             "friction": p["friction"][regular], "load": p["mean_pressure"][regular],
-            "converged": p["converged"][regular],
-            "evaluations": int(p["function_evaluations"].sum()),
-            "seconds": time.perf_counter() - t0}
+            "converged": p["converged"][regular], **report}
 
 
 def compare(curves: dict[int, dict]) -> dict:
@@ -146,7 +155,7 @@ def main(argv=None) -> int:
                             curves[per] = sweep(scene, zetas, load, history, args.workers,
                                                 args.elements, Path(folder))
                     worst = compare(curves)
-                    failed = sum(int((~c["converged"]).sum()) for c in curves.values())
+                    failed = sum(c["failed"] for c in curves.values())
                     row = {"scene": label, "load": load, "history": history, **worst,
                            "failed": failed,
                            "evaluations": {str(p): c["evaluations"] for p, c in curves.items()},
