@@ -42,7 +42,12 @@ the contact is refined there, as the equilibrium solve refines it
 (:func:`~.restarts.refined_where_alternating`; in an intermediate motion too, which has no shorter
 step to get past it), and the motion goes on. Where every contact detaches while the profile
 penetrates the undeformed solid, contacts are born there and the motion goes on; born again where
-they were, the motion is periodic (no steady state). Where the steps creep to the end of the
+they were, the motion is periodic (no steady state); so it is where contacts born at a rest
+state are born again at the same rest state (they narrowed to nothing in between), and where they
+were born because the gap fell below a cohesive range, the state is a cohesive zone without a
+contact, which zones at contact edges do not represent: the motion ends and says which (it cycled
+a contact a step, 1000 births, on a confined rough Maugis-Dugdale scene). Where the steps creep
+to the end of the
 model's reach (no field past it; :data:`WALL`), the motion ends there, not converged; where an edge
 is held at a jump of its residual across zero (:func:`_held`: no root, the flow on both sides
 points at it), it ends there too, saying that the balance has no root (outside the model). So
@@ -193,6 +198,8 @@ class Relaxation:
         self._splits: list = []      # the contact sets made by splits in the current motion
         # contacts born in it after every contact detached (None: no births there)
         self._reborn: list | None = []
+        # (rest state, born regions) of the births at the rest states of the current motion
+        self._births: list = []
 
     def run(self, edges, control: Control, final: bool = True, births: bool = True) -> State:
         """The state the edges' motion from ``edges`` ends in (not converged, with the reason,
@@ -203,6 +210,7 @@ class Relaxation:
         for which that is the answer "none holds here")."""
         systems = _Systems()
         self._splits, self._reborn = [], [] if births else None
+        self._births = []
         self._finish = ({} if final else
                         {"polish": False, "refine": False, "reduction": STEP_REDUCTION})
         x = np.asarray(edges, dtype=float).copy()
@@ -235,6 +243,9 @@ class Relaxation:
                        **self._finish, **(self.trial if trial else {}))
         if out.change == "birth":
             regions, snapped = eq.born(out.fields)
+            again = self._born_again(out.edges, regions, snapped)
+            if again is not None:
+                return again
             new = [v for (a, b, _) in regions for v in (a, b)]
             edges, _, _, full = repair(np.concatenate([out.edges, new]), MIN_WIDTH, MIN_GAP)
             eq.log.event(f"{len(regions)} contact(s) born" + (
@@ -270,6 +281,29 @@ class Relaxation:
                                            "contacts": float(len(where))})
                     return edges
         return None if out.change else out
+
+    def _born_again(self, edges, regions, snapped: bool) -> State | None:
+        """The end of a motion whose contacts, born at a rest state ``edges``, are born again at
+        the same rest state where they were born before (they did not hold there, and their
+        vanishing brought the motion back): a failed state that says why, else None (the
+        births are recorded). Born where the gap falls below a cohesive range (``snapped``),
+        the state is a cohesive zone without a contact, which the zones of this method (at the
+        edges of contacts) do not represent; born where the profile penetrates, the motion is
+        periodic: no steady state."""
+        edges = np.asarray(edges, dtype=float)
+        for rest, born in self._births:
+            if (len(rest) == len(edges) and np.allclose(rest, edges, rtol=0, atol=1e-6)
+                    and any(a < b2 and a2 < b for (a, b, _) in regions
+                            for (a2, b2, _) in born)):
+                why = ("cycles: a contact born where the gap falls below the cohesive range "
+                       "does not hold and is born there again (the gap stays within the range "
+                       "without a contact: a cohesive zone that this method's zones, at the "
+                       "edges of contacts, do not represent)" if snapped else
+                       "makes contacts born where the profile penetrates vanish and be born "
+                       "again where they were: no steady state at this control")
+                return attrs.evolve(self._failed(edges, why), change="reborn")
+        self._births.append((edges, regions))
+        return None
 
     def _run(self, x: np.ndarray, control: Control,
              systems: "_Systems") -> State | np.ndarray:
