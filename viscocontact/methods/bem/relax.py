@@ -47,10 +47,10 @@ state are born again at the same rest state (they narrowed to nothing in between
 were born because the gap fell below a cohesive range, the state is a cohesive zone without a
 contact, which zones at contact edges do not represent: the motion ends and says which (it cycled
 a contact a step, 1000 births, on a confined rough Maugis-Dugdale scene). Where the steps creep
-to the end of the
-model's reach (no field past it; :data:`WALL`), the motion ends there, not converged; where an edge
-is held at a jump of its residual across zero (:func:`_held`: no root, the flow on both sides
-points at it), it ends there too, saying that the balance has no root (outside the model). So
+to the end of the model's reach (no field past it; :data:`WALL`), the motion ends there, not
+converged; where an edge is held at a jump of its residual across zero (:func:`_held`: no root,
+the flow on both sides points at it), it ends there too, saying that the balance has no root
+(outside the model). So
 merges, detachments, births and splits all happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
