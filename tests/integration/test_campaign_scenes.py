@@ -329,3 +329,16 @@ LOADED_WAVY_MD_FREE_LAYER = {
 
 def test_under_load_control_the_first_contact_snaps_in_at_zero_load():
     _converges(LOADED_WAVY_MD_FREE_LAYER)
+
+
+@pytest.mark.slow     # 22-37 s on a two-core machine
+def test_a_motion_that_comes_back_to_its_births_has_no_steady_state():
+    """Campaign seed 225 (energy balance on a thin confined Prony layer, penetration control):
+    a contact born at a rest state grows, merges with its neighbour and the merged contact
+    recedes to the same rest state, where the profile penetrates again. The motion ran so past
+    600 s; it now ends for that property of the motion (no steady state)."""
+    from viscocontact.testing.campaign import draw
+
+    outcome = run_scene(draw(225), time_limit=150.0)
+    assert outcome.outcome == "scene", (outcome.outcome, outcome.message)
+    assert "born there again" in outcome.message and "no steady state" in outcome.message

@@ -43,15 +43,16 @@ the contact is refined there, as the equilibrium solve refines it
 step to get past it), and the motion goes on. Where every contact detaches while the profile
 penetrates the undeformed solid, contacts are born there and the motion goes on; born again where
 they were, the motion is periodic (no steady state); so it is where contacts born at a rest
-state are born again at the same rest state (they narrowed to nothing in between), and where they
-were born because the gap fell below a cohesive range, the state is a cohesive zone without a
-contact, which zones at contact edges do not represent: the motion ends and says which (it cycled
-a contact a step, 1000 births, on a confined rough Maugis-Dugdale scene). Where the steps creep
-to the end of the model's reach (no field past it; :data:`WALL`), the motion ends there, not
-converged; where an edge is held at a jump of its residual across zero (:func:`_held`: no root,
-the flow on both sides points at it), it ends there too, saying that the balance has no root
-(outside the model). So
-merges, detachments, births and splits all happen on the way, as the motion makes them.
+state are born again at the same rest state, the motion having come back to it (the contacts
+vanished, or merged and receded; campaign seed 225, a thin confined Prony layer, cycled so past
+600 s), and where they were born because the gap fell below a cohesive range, the state is a
+cohesive zone without a contact, which zones at contact edges do not represent: the motion ends
+and says which (a confined rough Maugis-Dugdale scene cycled one contact a step, 1000 births).
+Where the steps creep to the end of the model's reach (no field past it; :data:`WALL`), the
+motion ends there, not converged; where an edge is held at a jump of its residual across zero
+(:func:`_held`: no root, the flow on both sides points at it), it ends there too, saying that
+the balance has no root (outside the model). So merges, detachments, births and splits all
+happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
@@ -284,9 +285,8 @@ class Relaxation:
 
     def _born_again(self, edges, regions, snapped: bool) -> State | None:
         """The end of a motion whose contacts, born at a rest state ``edges``, are born again at
-        the same rest state where they were born before (they did not hold there, and their
-        vanishing brought the motion back): a failed state that says why, else None (the
-        births are recorded). Born where the gap falls below a cohesive range (``snapped``),
+        the same rest state where they were born before (the motion came back to it): a failed
+        state that says why, else None (the births are recorded). Born where the gap falls below a cohesive range (``snapped``),
         the state is a cohesive zone without a contact, which the zones of this method (at the
         edges of contacts) do not represent; born where the profile penetrates, the motion is
         periodic: no steady state."""
@@ -299,8 +299,9 @@ class Relaxation:
                        "does not hold and is born there again (the gap stays within the range "
                        "without a contact: a cohesive zone that this method's zones, at the "
                        "edges of contacts, do not represent)" if snapped else
-                       "makes contacts born where the profile penetrates vanish and be born "
-                       "again where they were: no steady state at this control")
+                       "comes back to a rest state that it left by contacts born where the "
+                       "profile penetrates, and they are born there again: the motion is "
+                       "periodic, no steady state at this control")
                 return attrs.evolve(self._failed(edges, why), change="reborn")
         self._births.append((edges, regions))
         return None
