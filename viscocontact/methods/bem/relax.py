@@ -286,10 +286,10 @@ class Relaxation:
     def _born_again(self, edges, regions, snapped: bool) -> State | None:
         """The end of a motion whose contacts, born at a rest state ``edges``, are born again at
         the same rest state where they were born before (the motion came back to it): a failed
-        state that says why, else None (the births are recorded). Born where the gap falls below a cohesive range (``snapped``),
-        the state is a cohesive zone without a contact, which the zones of this method (at the
-        edges of contacts) do not represent; born where the profile penetrates, the motion is
-        periodic: no steady state."""
+        state that says why, else None (the births are recorded). Born where the gap falls below
+        a cohesive range (``snapped``), the state is a cohesive zone without a contact, which
+        the zones of this method (at the edges of contacts) do not represent; born where the
+        profile penetrates, the motion is periodic: no steady state."""
         edges = np.asarray(edges, dtype=float)
         for rest, born in self._births:
             if (len(rest) == len(edges) and np.allclose(rest, edges, rtol=0, atol=1e-6)
