@@ -464,33 +464,17 @@ class _ZoneNewton:
         self.last = np.inf
 
     def _converged(self, active: np.ndarray) -> bool:
-        """Whether the equations of the ``active`` zones hold to :data:`EDGE_TOLERANCE`, or,
-        once they stop decreasing, to :data:`NOISE` (the fit's round-off) or to four times their
-        measured round-off floor (:meth:`floor`); else their size is kept for the next test.
-        Newton's iteration reaches the floor in four or five steps and then wanders on it: on a
-        thin elastic layer under Maugis-Dugdale zones (campaign seed 277) at 3-15e-10, above
-        :data:`NOISE` of its scale, for up to the 60 iterations of :data:`ITERATIONS` (a
-        Jacobian each), where a zone solve took 13 Jacobians on average."""
+        """Whether the ``active`` zones' equations hold to :data:`EDGE_TOLERANCE` or, stopped
+        decreasing, to :data:`NOISE` or 4 times their :func:`_floor`; else their size is kept."""
         scale = self.stress * np.sqrt(max(float(np.max(self.t * self.t)), self.half))
         size = float(np.max(np.abs(self.k[active]))) if np.any(active) else 0.0
         if size <= EDGE_TOLERANCE * scale + 1e-15:
             return True
-        if size > 0.5 * self.last and (size <= NOISE * scale or size <= 4.0 * self.floor(
-                self.t, self.k, self.full)):
+        if size > 0.5 * self.last and (size <= NOISE * scale or size <= 4.0 * _floor(
+                self, self.t, self.k, self.full)):
             return True       # at the round-off: no longer decreasing
         self.last = size
         return False
-
-    def floor(self, t: np.ndarray, k: np.ndarray, full: np.ndarray) -> float:
-        """The round-off floor of the equations ``k`` at ``√d = t`` (``full``: the filled
-        necks): the largest change of an active equation when every zone's ``√d`` moves by a
-        relative 1e-13, far below any physical change (one evaluation; inf where it is not
-        finite)."""
-        _, moved = self.evaluate(t * (1.0 + 1e-13))
-        active = ~((t == 0.0) & (k <= 0.0)) & ~full
-        with np.errstate(invalid="ignore"):
-            floor = float(np.max(np.abs(moved - k)[active])) if np.any(active) else 0.0
-        return floor if np.isfinite(floor) else np.inf
 
     def _reopen(self) -> bool:
         """Open a zone at every edge without one whose stress is tensile; whether any did."""
@@ -701,15 +685,29 @@ class ZoneDerivatives:
     pressure: np.ndarray
 
 
+def _floor(zn: "_ZoneNewton", t: np.ndarray, k: np.ndarray, full: np.ndarray) -> float:
+    """The round-off floor of the equations ``k`` of ``zn`` at ``√d = t`` (``full``: the filled
+    necks): the largest change of an active equation when every zone's ``√d`` moves by a
+    relative 1e-13, far below any physical change (one evaluation; inf where not finite).
+    Newton's iteration reaches it in four or five steps and then wanders on it: on a thin
+    elastic layer (campaign seed 277) at 3-15e-10, above :data:`NOISE` of its scale, until its
+    :data:`ITERATIONS` ran out, where the convergence test did not measure it."""
+    _, moved = zn.evaluate(t * (1.0 + 1e-13))
+    active = ~((t == 0.0) & (k <= 0.0)) & ~full
+    with np.errstate(invalid="ignore"):
+        floor = float(np.max(np.abs(moved - k)[active])) if np.any(active) else 0.0
+    return floor if np.isfinite(floor) else np.inf
+
+
 def _run_out(zn: "_ZoneNewton", best: tuple | None) -> FieldSolution:
     """The field of an iteration ``zn`` that ran out of iterations: its best state ``(size, t,
     fields, k, full)`` where that holds its equations to four times their round-off floor
-    (:meth:`_ZoneNewton.floor`); else a :class:`ZoneError`. On a contact
+    (:func:`_floor`); else a :class:`ZoneError`. On a contact
     1.5e-4 wide born between zones of 0.002-0.009 (campaign seed 273) ``K̃`` wandered at
     1-6e-9 for 60 iterations, five times :data:`NOISE` of its scale."""
     if best is not None:
         size, t, fields, k, full = best
-        if size <= 4.0 * zn.floor(t, k, full):
+        if size <= 4.0 * _floor(zn, t, k, full):
             zn.t, zn.fields, zn.k, zn.full = t, fields, k, full
             return zn.finished(fields)
     raise ZoneError(f"the bounded-stress equations of the zones did not converge in "

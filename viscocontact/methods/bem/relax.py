@@ -244,9 +244,9 @@ class Relaxation:
                        **self._finish, **(self.trial if trial else {}))
         if out.change == "birth":
             regions, snapped = eq.born(out.fields)
-            again = self._born_again(out.edges, regions, snapped)
+            again = _born_again(self._births, out.edges, regions, snapped)
             if again is not None:
-                return again
+                return attrs.evolve(self._failed(out.edges, again), change="reborn")
             new = [v for (a, b, _) in regions for v in (a, b)]
             edges, _, _, full = repair(np.concatenate([out.edges, new]), MIN_WIDTH, MIN_GAP)
             eq.log.event(f"{len(regions)} contact(s) born" + (
@@ -282,29 +282,6 @@ class Relaxation:
                                            "contacts": float(len(where))})
                     return edges
         return None if out.change else out
-
-    def _born_again(self, edges, regions, snapped: bool) -> State | None:
-        """The end of a motion whose contacts, born at a rest state ``edges``, are born again at
-        the same rest state where they were born before (the motion came back to it): a failed
-        state that says why, else None (the births are recorded). Born where the gap falls below
-        a cohesive range (``snapped``), the state is a cohesive zone without a contact, which
-        the zones of this method (at the edges of contacts) do not represent; born where the
-        profile penetrates, the motion is periodic: no steady state."""
-        edges = np.asarray(edges, dtype=float)
-        for rest, born in self._births:
-            if (len(rest) == len(edges) and np.allclose(rest, edges, rtol=0, atol=1e-6)
-                    and any(a < b2 and a2 < b for (a, b, _) in regions
-                            for (a2, b2, _) in born)):
-                why = ("cycles: a contact born where the gap falls below the cohesive range "
-                       "does not hold and is born there again (the gap stays within the range "
-                       "without a contact: a cohesive zone that this method's zones, at the "
-                       "edges of contacts, do not represent)" if snapped else
-                       "comes back to a rest state that it left by contacts born where the "
-                       "profile penetrates, and they are born there again: the motion is "
-                       "periodic, no steady state at this control")
-                return attrs.evolve(self._failed(edges, why), change="reborn")
-        self._births.append((edges, regions))
-        return None
 
     def _run(self, x: np.ndarray, control: Control,
              systems: "_Systems") -> State | np.ndarray:
@@ -491,6 +468,28 @@ class Relaxation:
                                         "contacts": float(len(born) // 2)})
             return born
         return State.no_contact()
+
+
+def _born_again(births: list, edges, regions, snapped: bool) -> str | None:
+    """Why a motion ends whose contacts, born at a rest state ``edges``, are born again at the
+    same rest state where they were born before (the motion came back to it), else None (the
+    births are recorded in ``births``, ``(rest state, regions)`` pairs). Born where the gap
+    falls below a cohesive range (``snapped``), the state is a cohesive zone without a
+    contact, which the zones of this method (at the edges of contacts) do not represent; born
+    where the profile penetrates, the motion is periodic: no steady state."""
+    edges = np.asarray(edges, dtype=float)
+    for rest, born in births:
+        if (len(rest) == len(edges) and np.allclose(rest, edges, rtol=0, atol=1e-6)
+                and any(a < b2 and a2 < b for (a, b, _) in regions for (a2, b2, _) in born)):
+            return ("cycles: a contact born where the gap falls below the cohesive range does "
+                    "not hold and is born there again (the gap stays within the range without "
+                    "a contact: a cohesive zone that this method's zones, at the edges of "
+                    "contacts, do not represent)" if snapped else
+                    "comes back to a rest state that it left by contacts born where the profile "
+                    "penetrates, and they are born there again: the motion is periodic, no "
+                    "steady state at this control")
+    births.append((edges, regions))
+    return None
 
 
 def _proposed(m: "_Motion", r: np.ndarray, J: np.ndarray,
