@@ -418,7 +418,7 @@ class _ZoneNewton:
         self._start(start, full)
         best = None                           # (size, t, fields, k, full) of the best state
         for _ in range(ITERATIONS):
-            active = ~((self.t == 0.0) & (self.k <= 0.0)) & ~self.full
+            active = _active(self.t, self.k, self.full)
             if self._converged(active):
                 return self.finished(self.fields)
             if best is None or self.last < best[0]:
@@ -470,8 +470,8 @@ class _ZoneNewton:
         size = float(np.max(np.abs(self.k[active]))) if np.any(active) else 0.0
         if size <= EDGE_TOLERANCE * scale + 1e-15:
             return True
-        if size > 0.5 * self.last and (size <= NOISE * scale or size <= 4.0 * _floor(
-                self, self.t, self.k, self.full)):
+        if size > 0.5 * self.last and (size <= NOISE * scale
+                                       or size <= 4.0 * _floor(self, self.t, self.k, active)):
             return True       # at the round-off: no longer decreasing
         self.last = size
         return False
@@ -685,15 +685,20 @@ class ZoneDerivatives:
     pressure: np.ndarray
 
 
-def _floor(zn: "_ZoneNewton", t: np.ndarray, k: np.ndarray, full: np.ndarray) -> float:
-    """The round-off floor of the equations ``k`` of ``zn`` at ``√d = t`` (``full``: the filled
-    necks): the largest change of an active equation when every zone's ``√d`` moves by a
+def _active(t: np.ndarray, k: np.ndarray, full: np.ndarray) -> np.ndarray:
+    """The zones whose equations the iteration solves at ``√d = t`` with values ``k``: all but
+    the closed zones whose edge is compressive and the zones of filled necks (``full``)."""
+    return ~((t == 0.0) & (k <= 0.0)) & ~full
+
+
+def _floor(zn: "_ZoneNewton", t: np.ndarray, k: np.ndarray, active: np.ndarray) -> float:
+    """The round-off floor of the equations ``k`` of ``zn`` at ``√d = t`` (``active``: those
+    solved, :func:`_active`): the largest change of one when every zone's ``√d`` moves by a
     relative 1e-13, far below any physical change (one evaluation; inf where not finite).
     Newton's iteration reaches it in four or five steps and then wanders on it: on a thin
     elastic layer (campaign seed 277) at 3-15e-10, above :data:`NOISE` of its scale, until its
     :data:`ITERATIONS` ran out, where the convergence test did not measure it."""
     _, moved = zn.evaluate(t * (1.0 + 1e-13))
-    active = ~((t == 0.0) & (k <= 0.0)) & ~full
     with np.errstate(invalid="ignore"):
         floor = float(np.max(np.abs(moved - k)[active])) if np.any(active) else 0.0
     return floor if np.isfinite(floor) else np.inf
@@ -707,7 +712,7 @@ def _run_out(zn: "_ZoneNewton", best: tuple | None) -> FieldSolution:
     1-6e-9 for 60 iterations, five times :data:`NOISE` of its scale."""
     if best is not None:
         size, t, fields, k, full = best
-        if size <= 4.0 * _floor(zn, t, k, full):
+        if size <= 4.0 * _floor(zn, t, k, _active(t, k, full)):
             zn.t, zn.fields, zn.k, zn.full = t, fields, k, full
             return zn.finished(fields)
     raise ZoneError(f"the bounded-stress equations of the zones did not converge in "
