@@ -197,10 +197,10 @@ class Relaxation:
         self.trial = dict(trial or {})
         self._finish: dict = {}
         self._splits: list = []      # the contact sets made by splits in the current motion
-        # contacts born in it after every contact detached (None: no births there)
-        self._reborn: list | None = []
-        # (rest state, born regions) of the births at the rest states of the current motion
+        # (rest state, born regions) of the births of the current motion: at its rest states,
+        # and with no contact (an empty rest state) after every contact detached
         self._births: list = []
+        self._bear = True            # contacts are born where every contact detached
 
     def run(self, edges, control: Control, final: bool = True, births: bool = True) -> State:
         """The state the edges' motion from ``edges`` ends in (not converged, with the reason,
@@ -210,8 +210,7 @@ class Relaxation:
         where the profile penetrates (the approach's search for the first contact that holds,
         for which that is the answer "none holds here")."""
         systems = _Systems()
-        self._splits, self._reborn = [], [] if births else None
-        self._births = []
+        self._splits, self._births, self._bear = [], [], births
         self._finish = ({} if final else
                         {"polish": False, "refine": False, "reduction": STEP_REDUCTION})
         x = np.asarray(edges, dtype=float).copy()
@@ -448,20 +447,16 @@ class Relaxation:
         if control.is_load and control.value > 0:
             # a compressive load needs a contact: found afresh from the first touch
             return self.eq.solve(landed, control, use_fallback=False, **self._finish)
-        reborn = self._reborn
-        born = (None if control.is_load or reborn is None
+        born = (None if control.is_load or not self._bear
                 else self.eq.checks.births_without_contact(control))
-        if born is not None and reborn is not None:
+        if born is not None:
             # no contact is no state where the profile penetrates the solid: contacts are born
-            # where it does, as at the end of any motion; born where they were born before in
-            # this motion, they travel and vanish again: the motion is periodic
-            if any(len(b) == len(born) and np.allclose(b, born, rtol=0, atol=1e-12)
-                   for b in reborn):
-                return attrs.evolve(
-                    self._failed(landed, "detaches its contacts, which are born again where "
-                                         "they were: no steady state at this control"),
-                    change="reborn")
-            reborn.append(born)
+            # where it does, as at any rest state of the motion (and end it the same way where
+            # they were born before: they travel and vanish again)
+            regions = [(a, b, None) for a, b in zip(born[0::2], born[1::2])]
+            again = _born_again(self._births, np.zeros(0), regions, False)
+            if again is not None:
+                return attrs.evolve(self._failed(landed, again), change="reborn")
             self.eq.log.event(f"{len(born) // 2} contact(s) born where the profile penetrates "
                               "the undeformed solid")
             self.eq.log.records.append({"kind": "birth", "control": control.value,
@@ -471,8 +466,9 @@ class Relaxation:
 
 
 def _born_again(births: list, edges, regions, snapped: bool) -> str | None:
-    """Why a motion ends whose contacts, born at a rest state ``edges``, are born again at the
-    same rest state where they were born before (the motion came back to it), else None (the
+    """Why a motion ends whose contacts, born at a rest state ``edges`` (empty: after every
+    contact detached), are born again at the same rest state where they were born before (the
+    motion came back to it), else None (the
     births are recorded in ``births``, ``(rest state, regions)`` pairs). Born where the gap
     falls below a cohesive range (``snapped``), the state is a cohesive zone without a
     contact, which the zones of this method (at the edges of contacts) do not represent; born
@@ -485,7 +481,7 @@ def _born_again(births: list, edges, regions, snapped: bool) -> str | None:
                     "not hold and is born there again (the gap stays within the range without "
                     "a contact: a cohesive zone that this method's zones, at the edges of "
                     "contacts, do not represent)" if snapped else
-                    "comes back to a rest state that it left by contacts born where the profile "
+                    "comes back to a state that it left by contacts born where the profile "
                     "penetrates, and they are born there again: the motion is periodic, no "
                     "steady state at this control")
     births.append((edges, regions))
