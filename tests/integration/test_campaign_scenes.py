@@ -93,14 +93,16 @@ def test_thin_free_layer_maugis_dugdale():
     assert outcome.outcome == "converged" and outcome.method == "spectral"
 
 
-@pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason=(
-    "rough Maugis-Dugdale contact on a thick confined layer at ζ = 1.4e-3: the BEM ends where "
-    "a cohesive zone without a contact forms (its zones sit at contact edges), and the grid's "
-    "approach on its first grid (256 cells, zones of a few cells) stops where three sets of "
-    "cohesive tips follow each other"))
+@pytest.mark.slow     # 60 s on two loaded cores
 def test_confined_rough_maugis_dugdale():
-    _passes(CONFINED_ROUGH_MD, limit=150.0)
+    """Rough Maugis-Dugdale contact on a thick confined layer at ζ = 1.4e-3: the BEM ends where
+    a cohesive zone without a contact forms (its zones sit at contact edges), and ``auto``
+    solves the scene on the grid. There the zone is born narrower than a cell at a local
+    minimum of the gap and grows under its own stress; its tips' secant pointed back across it
+    and the zone cycled until the approach's solves ran out. Moved out, the way their residual
+    says, the tips settle and the grid converges (estimate 3.3e-4)."""
+    outcome = _passes(CONFINED_ROUGH_MD, limit=150.0)
+    assert outcome.outcome == "converged" and outcome.method == "spectral"
 
 
 @pytest.mark.slow     # 25 s on a two-core machine

@@ -18,6 +18,19 @@ def test_a_tip_moves_the_way_its_residual_says_until_a_sample_of_each_sign_brack
     assert 0.5 < s < 1.0
 
 
+def test_a_zone_growing_under_its_own_stress_grows_at_a_minimum_of_the_gap():
+    """A zone narrower than a cell around a local minimum of the gap (a zone without contact
+    just born): the gap's own slope at its tip is about zero, here slightly negative, and the
+    residual falls as the zone grows (its own stress pulls the gap down). The tip moves out, the
+    way its residual says, not to the secant's root back across the run (samples from a
+    confined rough Maugis-Dugdale approach, whose zone cycled so until its solves ran out)."""
+    track = TipTrack()
+    s, track = _tip_step(track, 0.0091, -2.688e-4, 0.0215, -1e-5)
+    assert s == pytest.approx(0.0215)
+    s, track = _tip_step(track, 0.0215, -3.673e-4, 0.0384, -1e-5)
+    assert s > 0.0384              # twice its last move out, past the creeping fixed point
+
+
 def test_a_bracketed_tip_stays_inside_its_bracket_on_a_kinked_residual():
     """A residual with a kink (a cell centre's, or the zone's own pull) where the secant of the
     last two samples points far outside the bracket: the false position, else the middle, keeps

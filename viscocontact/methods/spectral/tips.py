@@ -130,9 +130,13 @@ def _tip_step(track: TipTrack, s: float, r: float, fresh: float,
               slope_hint: float) -> tuple[float, TipTrack]:
     """The next outward coordinate of one tip and its track.
 
-    The secant of the tip's last two samples where its slope is usable (at least
-    :data:`FLATTEST_SLOPE` times the gap's own ``slope_hint``, the slope the residual would
-    have without the zone's own stress, or two samples of opposite signs). While a root is
+    The secant of the tip's last two samples where its slope is usable: two samples of
+    opposite signs, or a residual that rises outwards, as a tip's residual does at a stable
+    root, by at least :data:`FLATTEST_SLOPE` times the gap's own ``slope_hint`` (the slope the
+    residual would have without the zone's own stress). A residual that falls outwards (a zone
+    that grows under its own stress) has no root the way the residual says, and its secant
+    points back across the run: a tip at a local minimum of the gap, where ``slope_hint`` is
+    about zero or negative, was sent so, and a zone narrower than a cell cycled. While a root is
     bracketed (recent samples of each sign, :class:`TipTrack`), the tip stays within the
     bracket's inner 98 %: the secant there, else the false position between its sides, else
     its middle; so a zone that snaps over many cells settles instead of cycling between the two
@@ -146,7 +150,7 @@ def _tip_step(track: TipTrack, s: float, r: float, fresh: float,
     secant = None
     if before is not None and s != before[0]:
         slope = (r - before[1]) / (s - before[0])
-        if r * before[1] < 0.0 or (slope * slope_hint > 0
+        if r * before[1] < 0.0 or (slope > 0.0
                                    and abs(slope) >= FLATTEST_SLOPE * abs(slope_hint)):
             secant = s - r / slope
     if track.inner is not None and track.outer is not None:
