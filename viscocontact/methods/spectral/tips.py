@@ -134,9 +134,9 @@ def _tip_step(track: TipTrack, s: float, r: float, fresh: float,
     opposite signs, or a residual that rises outwards, as a tip's residual does at a stable
     root, by at least :data:`FLATTEST_SLOPE` times the gap's own ``slope_hint`` (the slope the
     residual would have without the zone's own stress). A residual that falls outwards (a zone
-    that grows under its own stress) has no root the way the residual says, and its secant
-    points back across the run: a tip at a local minimum of the gap, where ``slope_hint`` is
-    about zero or negative, was sent so, and a zone narrower than a cell cycled. While a root is
+    that grows under its own stress, as one born at a local minimum of the gap does, where
+    ``slope_hint`` is about zero or negative) has no root the way the residual says: its
+    secant would send the tip back across the run, and the zone would cycle. While a root is
     bracketed (recent samples of each sign, :class:`TipTrack`), the tip stays within the
     bracket's inner 98 %: the secant there, else the false position between its sides, else
     its middle; so a zone that snaps over many cells settles instead of cycling between the two
