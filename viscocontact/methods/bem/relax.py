@@ -469,10 +469,10 @@ def _born_again(births: list, edges, regions, snapped: bool) -> str | None:
     """Why a motion ends whose contacts, born at a rest state ``edges`` (empty: after every
     contact detached), are born again at the same rest state where they were born before (the
     motion came back to it), else None (the births are recorded in ``births``, ``(rest state,
-    regions)`` pairs). Born where the gap
-    falls below a cohesive range (``snapped``), the state is a cohesive zone without a
-    contact, which the zones of this method (at the edges of contacts) do not represent; born
-    where the profile penetrates, the motion is periodic: no steady state."""
+    regions)`` pairs). Born where the gap falls below a cohesive range (``snapped``), the state
+    is a cohesive zone without a contact, which the zones of this method (at the edges of
+    contacts) do not represent; born where the profile penetrates, the motion is periodic: no
+    steady state."""
     edges = np.asarray(edges, dtype=float)
     for rest, born in births:
         if (len(rest) == len(edges) and np.allclose(rest, edges, rtol=0, atol=1e-6)
