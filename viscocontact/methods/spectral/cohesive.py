@@ -19,7 +19,8 @@ zone's tip), the shifted pressure ``q = p + σ̃0 w`` obeys the adhesionless con
 stress, ``r̃ + σ̃0 A w``, and in load control the load raised by ``σ̃0 mean(w)``. So for given
 tips one adhesionless grid solve (Polonsky-Keer or the active set) gives the equilibrium, and
 the tips are found by iterating on the gaps, each tip ``g = η`` placed between two cell centres
-(:mod:`~viscocontact.methods.spectral.tips`, :func:`cohesive_solve`).
+(:mod:`~viscocontact.methods.spectral.tips`, :func:`cohesive_solve`); on a 1D grid all the tips
+also take Newton's step together where it holds (:mod:`~.tip_newton`).
 
 The law is non-convex (the traction jumps at ``g = η``), so a scene can have several equilibria
 (the JKR-like branches); this iteration finds the one it reaches from its start, and the
@@ -38,6 +39,7 @@ import numpy as np
 from .grid_law import GridLaw
 from .operator import convolve
 from .solvers import GridSolution, grid_solve, violation
+from .tip_newton import TipResponses, newton_tips
 from .tips import (FLATTEST_SLOPE, contact_extents, moved_tips, row_tips, same_runs,
                    tip_positions, tip_residuals, tip_weights, whole_row)
 
@@ -150,6 +152,9 @@ class _TipIteration:
             self.contact = np.asarray(start_contact, bool)
             self.extents = contact_extents(self.contact, self.width)
         self.before: list | None = None  # the tips' tracks per row (None: the runs changed)
+        # a 1D grid's tips also take Newton's step together (tip_newton)
+        self.responses = (TipResponses(circulant, law.strength, load, options["workers"])
+                          if rows == 1 else None)
         self.loose = LOOSE_INNER
         self.iterations = self.applications = 0
         self.solution: GridSolution | None = None
@@ -216,7 +221,8 @@ class _TipIteration:
         """Whether the tips are found (the runs the same, every tip's residual within
         ``10·tolerance``, the last inner solve at the tolerance); if not, the next tips: where
         the gap crosses η in a row whose runs changed, else each by its own residual, within
-        the bracket of its root once it has one (:func:`moved_tips`)."""
+        the bracket of its root once it has one (:func:`moved_tips`), or on a 1D grid all
+        together by Newton's step where that holds (:func:`~.tip_newton.newton_tips`)."""
         width, law = self.width, self.law
         fresh = row_tips(self.g, self.contact, law, self.rows)
         same = [same_runs(old, new, width) or (whole_row(old, width) and whole_row(new, width))
@@ -245,6 +251,11 @@ class _TipIteration:
             moved_rows.append(row)
             tracks.append(kept)
         self.before = tracks
+        if self.responses is not None and all(same) and residuals[0]:
+            newton = newton_tips(self.extents[0], residuals[0], rows_g[0], self.contact,
+                                 self.responses)
+            if newton is not None:
+                moved_rows = [newton]
         self.extents = moved_rows
         return False
 
@@ -279,7 +290,10 @@ def cohesive_solve(circulant, heights, law: GridLaw, *, mean_pressure=None, pene
     η (a fixed point, which on its own creeps: the new stress pulls the next cell into range,
     a cell per solve); then each tip moves by the secant of its last two residuals, and once
     a sample of each sign brackets its root, within that bracket (:func:`~.tips.moved_tips`:
-    a zone that snaps over many cells then settles instead of cycling). Converged
+    a zone that snaps over many cells then settles instead of cycling). On a 1D grid
+    (``rows = 1``) the tips take Newton's step together instead where the tips' motion is
+    stable and no tip moves more than a cell (:mod:`~.tip_newton`): tips coupled strongly
+    (two in one cell, zones facing across a neck) settle instead of creeping. Converged
     when the runs are the same and every tip's residual is within ``10·tolerance``.
 
     Parameters
