@@ -96,3 +96,23 @@ def test_no_step_where_the_zone_grows_under_its_own_stress():
     gap[40] = 0.049
     moved = newton_tips([(39.8, 40.2)], [(-1e-3, -1e-3)], gap, np.zeros(N, bool), responses)
     assert moved is None
+
+
+# the thesis's rough profile (seed 0) with a Maugis-Dugdale law at ζ = 1: on the approach's
+# first grid two zones face each other across a neck of 1.6 cells, and their tips, moved one
+# by one, crept until the approach's 60 inner solves ran out
+ROUGH_MD = {
+    "profile": {"kind": "self-affine", "hurst": 0.8, "scales": 50, "rms": 0.01, "seed": 0},
+    "rheology": {"kind": "standard-linear-solid", "beta": 10.0},
+    "adhesion": {"kind": "maugis-dugdale", "gamma": 2.4e-5, "range": 3e-3},
+    "load": {"mean_pressure": 0.3}, "sliding": {"zeta": 1.0},
+    "method": {"kind": "spectral"}}
+
+
+@pytest.mark.slow      # 12 s on two loaded cores
+def test_coupled_tips_settle_on_the_thesis_rough_profile():
+    from viscocontact.testing.campaign import run_scene
+
+    outcome = run_scene(ROUGH_MD, time_limit=300.0)
+    assert outcome.outcome == "converged" and outcome.passed, (outcome.message, outcome.failures)
+    assert outcome.values["error_estimate"] < 1e-3
