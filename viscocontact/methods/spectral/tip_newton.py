@@ -3,8 +3,8 @@ r"""Newton's step of all the cohesive tips of a 1D grid together.
 The tips of :mod:`~.tips` move one by one, each by the secant of its own residual ``g - η``.
 Where two tips are coupled strongly - the two tips of a zone narrower than a cell, or two zones
 that face each other across a neck - a move of one changes the other's residual as much as its
-own, and the secants creep (a rough Maugis-Dugdale approach ran out of its 60 inner solves so,
-on a third of the campaign's failing scenes and on the thesis's rough profile at ζ = 1).
+own, and the secants creep: an approach on a rough profile can run out of its inner solves
+(:data:`~.cohesive.MAX_SETS`) before they settle.
 
 With the contact set held, the gap is linear in the cohesive shares ``w`` of the cells, and a
 tip ``x_j`` moves the share of the cell that holds it (``+1`` per cell for a zone's last tip,
