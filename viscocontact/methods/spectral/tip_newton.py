@@ -63,7 +63,7 @@ class TipResponses:
         unit[0] = 1.0
         self.column0 = convolve(unit, circulant.eigenvalues, workers)   # A_ij = column0[i - j]
         self.key: bytes | None = None
-        self.columns: dict[int, np.ndarray] = {}
+        self.columns: dict[int, np.ndarray | None] = {}
         self.factors = None
 
     def _apply(self, v, spectrum=None):
