@@ -695,9 +695,8 @@ def _floor(zn: "_ZoneNewton", t: np.ndarray, k: np.ndarray, active: np.ndarray) 
     """The round-off floor of the equations ``k`` of ``zn`` at ``√d = t`` (``active``: those
     solved, :func:`_active`): the largest change of one when every zone's ``√d`` moves by a
     relative 1e-13, far below any physical change (one evaluation; inf where not finite).
-    Newton's iteration reaches it in four or five steps and then wanders on it: on a thin
-    elastic layer (campaign seed 277) at 3-15e-10, above :data:`NOISE` of its scale, until its
-    :data:`ITERATIONS` ran out, where the convergence test did not measure it."""
+    Newton's iteration reaches it in four or five steps and then wanders on it (on a thin
+    elastic layer at 3-15e-10, above :data:`NOISE` of its scale)."""
     _, moved = zn.evaluate(t * (1.0 + 1e-13))
     with np.errstate(invalid="ignore"):
         floor = float(np.max(np.abs(moved - k)[active])) if np.any(active) else 0.0

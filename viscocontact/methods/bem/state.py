@@ -37,8 +37,8 @@ class State:
     #: a contact-set change the solve stopped at instead of making it (``Equilibrium.solve``
     #: with ``changes=False``): "birth", "merge", "detachment" or "split"; from the edges'
     #: motion (not converged) "cycle" (a split whose parts merge again) or "reborn" (contacts
-    #: that detach at a positive penetration, or that a motion come back to a rest state made,
-    #: are born again where they were); "" otherwise
+    #: born at a rest state, or after every contact detached at a positive penetration, that
+    #: are born there again when the motion comes back to that state); "" otherwise
     change: str = ""
 
     @property
