@@ -10,8 +10,8 @@ The scene is ``examples/scenes/thesis_rough.toml`` (H = 0.8, N_q = 50, q0·r_rms
 solver (Broyden) and the default mesh.
 
 Checks of a converged point (``ok``): the target load to 1e-12; a positive gap outside the
-contacts; the largest tension inside the contacts at most σ̃0 (the law's strength); friction by
-eq. 4.16 within 3 % of the dissipated power (``docs/cohesive.md``: they differ by the
+contacts; the largest tension at most σ̃0 (the law's strength), in the contacts and the zones;
+friction by eq. 4.16 within 3 % of the dissipated power (``docs/cohesive.md``: they differ by the
 discretisation of ``u' = r'`` between collocation points, most at ζ = 1e-6). The tip condition
 ``g̃(c) = η`` is the residual the solve converged on.
 
@@ -53,9 +53,9 @@ def problem(zeta: float, pressure: float, cohesive_range: float, seed: int):
 def checks(r, prob) -> dict:
     """The independent checks of a converged point (see the module docstring)."""
     strength = prob.adhesion.strength(prob.prepare().shape.amplitude)
-    f = r.fields
-    inside = f["gap"] == 0.0
-    tension = float(np.max(-f["pressure"][inside])) if np.any(inside) else float("nan")
+    # the cohesive law holds every traction at or below its strength, inside the contacts and
+    # in the zones (a grid's contact cells keep a gap of round-off, not exactly zero)
+    tension = float(np.max(-np.asarray(r.fields["pressure"])))
     mu, mu_d = r.friction, r.extras["friction_dissipation"]
     out = {"load": abs(r.mean_pressure - prob.mean_pressure) <= 1e-12,
            "gap": bool(r.min_gap > 0),

@@ -38,7 +38,8 @@ import numpy as np
 from scipy.linalg import lu_solve
 
 from ..errors import ViscoContactError
-from .fields import BOUNDED_POWERS, FieldSolution, KnownLoads, intensity_matrix, with_loads
+from .fields import (BOUNDED_POWERS, FieldSolution, KnownLoads, intensity_matrix, mesh_influence,
+                     with_loads)
 
 #: Accuracy of the bounded-stress condition, relative to ``σ̃0·√ℓ`` with ℓ the longest zone or
 #: the mean contact half-width, whichever is longer (a zone's own K̃) ...
@@ -271,7 +272,7 @@ def tip_gap_jacobian(fields: FieldSolution, kernel, shape, *, stress: float, con
             unit = lu_solve(fields.lu, np.ones_like(h), check_finite=False)
         shift = (-(h @ ds) - stress) / (h @ unit)
         ds += np.outer(unit, shift)
-    out = kernel.influence(c, mesh.left, mesh.right) @ ds - shift[None, :]
+    out = mesh_influence(kernel, mesh, c) @ ds - shift[None, :]
     out += stress * _kernel_slopes(kernel, c[:, None] - c[cols][None, :])
     loads = fields.loads
     if loads is None:
@@ -835,7 +836,7 @@ def _tip_gap_derivatives(fields: FieldSolution, dfields, stress: float, z: _Movi
     slopes = functools.partial(_kernel_slopes, kernel)
     sign, a, b, c, E = z.sign, z.a, z.b, z.c, z.E
     with np.errstate(invalid="ignore", divide="ignore"):
-        infl = kernel.influence(c, mesh.left, mesh.right)
+        infl = mesh_influence(kernel, mesh, c)
         s = dfields.node_weights(fields.sigma)
         g_nodes = slopes(c[:, None] - dfields.nodes[None, :])
         at_tip = g_nodes @ s

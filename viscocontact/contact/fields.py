@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import contextlib
 import threading
+import weakref
 from typing import Any, Callable, Iterator
 
 import attrs
@@ -293,9 +294,31 @@ def intensity_matrix(mesh: Mesh, powers=_POWERS) -> np.ndarray:
     return out
 
 
+#: the last :func:`mesh_influence` of each mesh alive: ``(kernel, points, matrix)``
+_INFLUENCE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def mesh_influence(kernel, mesh: Mesh, x: np.ndarray) -> np.ndarray:
+    """``kernel.influence(x, mesh.left, mesh.right)`` (read-only), kept for the last points of
+    each mesh: a cohesive zone's iteration asks for the displacement at its tips and then for
+    its derivatives there, on one mesh, at the same points."""
+    x = np.ascontiguousarray(x, dtype=float).ravel()
+    key = x.tobytes()
+    last = _INFLUENCE.get(mesh)
+    if last is not None and last[0] is kernel and last[1] == key:
+        return last[2]
+    matrix = kernel.influence(x, mesh.left, mesh.right)
+    matrix.flags.writeable = False
+    _INFLUENCE[mesh] = (kernel, key, matrix)
+    return matrix
+
+
 def displacement(kernel, mesh: Mesh, sigma: np.ndarray, x: np.ndarray, chunk: int = 2048):
-    """``ũ(x)`` produced by the element stresses (any points)."""
+    """``ũ(x)`` produced by the element stresses (any points; up to ``chunk`` points through
+    :func:`mesh_influence`)."""
     x = np.asarray(x, dtype=float)
+    if x.size <= chunk:
+        return (mesh_influence(kernel, mesh, x) @ sigma).reshape(x.shape)
     out = np.empty(x.shape)
     flat = x.ravel()
     res = out.ravel()

@@ -96,7 +96,7 @@ SCENE_REASONS = ("no equilibrium", "unstable under load control", "outside the m
 #: Words that name the solver's path: these are failures of the campaign.
 PATH_REASONS = ("still changing", "budget", "evaluations", "stalled", "not finite",
                 "time limit", "iterations", "did not converge", "no progress", "cycles",
-                "did not stop", "without a valid field")
+                "did not stop", "without a valid field", "do not represent")
 
 
 def _log_uniform(rng, lo: float, hi: float) -> float:

@@ -256,3 +256,42 @@ def test_a_finite_advance_holds_an_edge_where_its_stress_intensity_changes_sign(
     limit = vc.solve(vc.Scene.from_dict(table), initial=start)
     assert limit.converged and limit.n_contacts == 1
     assert limit.edges.ravel()[1] > 2.0795354 + 1e-5
+
+
+def _thesis_rough_cohesive(method):
+    """The thesis rough profile (seed 0) with Maugis-Dugdale zones of range h̃0 = 1e-4 at
+    ζ = 1e-2, p̃∞ = 0.3 (``benchmarks/cohesive_rough.py --range 1e-7``), as a scene."""
+    return vc.Scene.from_dict({
+        "profile": {"kind": "self-affine", "hurst": 0.8, "scales": 50, "rms": 0.01, "seed": 0},
+        "rheology": {"kind": "standard-linear-solid", "beta": 10.0},
+        "adhesion": {"kind": "maugis-dugdale", "gamma": 2.3885e-7, "range": 1e-4},
+        "solver": {"kind": "broyden"}, "load": {"mean_pressure": 0.3},
+        "sliding": {"zeta": 1e-2}, "method": {"kind": method}})
+
+
+def test_a_motion_that_slides_along_the_filling_of_a_neck_ends_there():
+    """Past a fold at p̃∞ = 0.093 on :func:`_thesis_rough_cohesive`, the motion reaches the
+    edges where the two zones of a neck switch from stopping short of each other to filling
+    it, every residual jumping; the flow on both sides points at the switch, and the steps
+    crossed it back and forth at a crawl until their budget of 2000 ran out (40 s). The state
+    on the switch holds a zone apart from the contacts, which the BEM's zones do not
+    represent: the motion ends there and says so."""
+    out = vc.solve(_thesis_rough_cohesive("bem"))
+    assert not out.converged
+    assert "slides along the filling of a neck by cohesive zones" in out.message
+    assert "zones at the edges of contacts do not represent" in out.message
+
+
+@pytest.mark.slow
+def test_auto_gives_a_neck_filled_in_part_to_the_grid():
+    """The same scene under ``auto``: the grid, which represents a zone apart from the
+    contacts, solves it once the BEM's motion has ended, and its answer passes the campaign's
+    checks (load, gap, friction against the dissipated power within its estimate)."""
+    from viscocontact.testing.campaign import check
+
+    scene = _thesis_rough_cohesive("auto")
+    out = vc.solve(scene)
+    assert out.converged and out.method == "spectral"
+    assert any("slides along the filling of a neck" in e for e in out.extras["events"])
+    failures, _, _ = check(scene, out)
+    assert failures == []
