@@ -344,3 +344,18 @@ def test_a_motion_that_comes_back_to_its_births_has_no_steady_state():
     outcome = run_scene(draw(225), time_limit=150.0)
     assert outcome.outcome == "scene", (outcome.outcome, outcome.message)
     assert "born there again" in outcome.message and "no steady state" in outcome.message
+
+
+@pytest.mark.slow     # 54-72 s on two loaded cores
+def test_a_contact_without_a_field_at_first_touch_is_solved_on_the_grid():
+    """Campaign seed 115 (self-affine, elastic free layer q0·d = 0.15, Maugis-Dugdale with
+    h̃0 = 2.5e-3, Δ̃ = 0.50): the BEM's zones have no field at the first contact, so the
+    approach solves the target at once from it, which ran past 600 s on the solver's full
+    budgets. On an approach step's budgets it fails fast, and ``auto`` solves the scene on the
+    grid, which converges and says that its estimate is above the tolerance."""
+    from viscocontact.testing.campaign import draw
+
+    outcome = run_scene(draw(115), time_limit=LIMIT)
+    assert not outcome.failures, (outcome.failures, outcome.message)
+    assert outcome.outcome == "converged" and outcome.method == "spectral"
+    assert "tolerance 0.001 not met" in outcome.message
