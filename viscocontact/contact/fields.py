@@ -301,7 +301,8 @@ _INFLUENCE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 def mesh_influence(kernel, mesh: Mesh, x: np.ndarray) -> np.ndarray:
     """``kernel.influence(x, mesh.left, mesh.right)`` (read-only), kept for the last points of
     each mesh: a cohesive zone's iteration asks for the displacement at its tips and then for
-    its derivatives there, on one mesh, at the same points."""
+    its derivatives there, on one mesh, at the same points. For a few points only (the tips:
+    the matrix lives as long as the mesh)."""
     x = np.ascontiguousarray(x, dtype=float).ravel()
     key = x.tobytes()
     last = _INFLUENCE.get(mesh)
@@ -314,10 +315,10 @@ def mesh_influence(kernel, mesh: Mesh, x: np.ndarray) -> np.ndarray:
 
 
 def displacement(kernel, mesh: Mesh, sigma: np.ndarray, x: np.ndarray, chunk: int = 2048):
-    """``ũ(x)`` produced by the element stresses (any points; up to ``chunk`` points through
-    :func:`mesh_influence`)."""
+    """``ũ(x)`` produced by the element stresses (any points)."""
     x = np.asarray(x, dtype=float)
-    if x.size <= chunk:
+    if x.size <= 2 * mesh.n_contacts:
+        # as many points as edges (the zones' tips): their influence is kept for the mesh
         return (mesh_influence(kernel, mesh, x) @ sigma).reshape(x.shape)
     out = np.empty(x.shape)
     flat = x.ravel()

@@ -54,8 +54,8 @@ motion ends there, not converged; where an edge is held at a jump of its residua
 the balance has no root (outside the model); and where the steps cross back and forth where the
 zones of a neck switch between stopping short of each other and filling it (:func:`_slides`:
 the flow slides along the switch, on which a zone apart from the contacts fills the neck in
-part, a state these zones do not represent), it ends saying so. So merges, detachments, births and splits all
-happen on the way, as the motion makes them.
+part, a state these zones do not represent), it ends saying so. So merges, detachments, births
+and splits all happen on the way, as the motion makes them.
 
 The landing is the equilibrium at the end of this flow: a property of the state the jump starts
 from, not of a search order; a tenth of the tolerance gives the same landing (tested).
