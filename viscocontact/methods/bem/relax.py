@@ -661,8 +661,7 @@ def _held(m: "_Motion", r: np.ndarray, landed: np.ndarray, changed: bool,
     if changed or m.r is None or m.J is None or np.shape(r) != np.shape(m.r):
         m.jumps = {}
         return None
-    linear = np.abs(m.J @ (landed - m.x))
-    crossed = (np.sign(r) != np.sign(m.r)) & (np.abs(r - m.r) > JUMP * linear)
+    crossed = _crossed(m, r, landed)
     for i in np.flatnonzero(crossed):
         sides = m.jumps.setdefault(int(i), set())
         sides.add(float(np.sign(r[i])))
@@ -677,6 +676,15 @@ def _held(m: "_Motion", r: np.ndarray, landed: np.ndarray, changed: bool,
                     "through it: its balance has no root there, outside the model "
                     "(docs/edges.md)")
     return None
+
+
+def _crossed(m: "_Motion", r: np.ndarray, landed: np.ndarray) -> np.ndarray:
+    """The edges whose residual changed sign over the step from ``m.x`` to ``landed`` by more
+    than :data:`JUMP` times the change the motion's Jacobian predicts: a jump crossed, or a
+    root the Jacobian misjudged."""
+    assert m.r is not None and m.J is not None
+    linear = np.abs(m.J @ (landed - m.x))
+    return (np.sign(r) != np.sign(m.r)) & (np.abs(r - m.r) > JUMP * linear)
 
 
 def _slides(m: "_Motion", r: np.ndarray, landed: np.ndarray, changed: bool) -> str | None:
@@ -698,8 +706,7 @@ def _slides(m: "_Motion", r: np.ndarray, landed: np.ndarray, changed: bool) -> s
     before, m.crossed = m.crossed, None
     if changed or m.r is None or m.J is None or np.shape(r) != np.shape(m.r):
         return None
-    linear = np.abs(m.J @ (landed - m.x))
-    crossing = (np.sign(r) != np.sign(m.r)) & (np.abs(r - m.r) > JUMP * linear)
+    crossing = _crossed(m, r, landed)
     if not np.any(crossing):
         return None
     with m.system.probing():
