@@ -103,7 +103,9 @@ class TipResponses:
             try:
                 self.factors = scipy.linalg.lu_factor(matrix, check_finite=False)
             except (np.linalg.LinAlgError, ValueError):
-                return None
+                self.factors = False         # this contact set's system has no factorisation
+        if self.factors is False:
+            return None
         b = np.append(rhs, self.strength) if self.load else rhs
         return scipy.linalg.lu_solve(self.factors, b, check_finite=False)
 
